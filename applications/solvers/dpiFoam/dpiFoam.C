@@ -1,0 +1,176 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+-------------------------------------------------------------------------------
+Application
+    dpiFoam
+
+Description
+    CFD-DEM solver for dry powder inhalers: carriers and representative API
+    parcels (each standing for N primary API particles) integrated by a DEM
+    engine with Hertz contact, friction, rolling resistance and cohesion,
+    optionally coupled to an incompressible PIMPLE gas with void fraction.
+
+    constant/couplingProperties selects what the scene needs:
+    \verbatim
+    fluid       none;           // none: DEM only, no fluid fields, no PIMPLE
+                                // incompressible: PIMPLE gas (see
+                                // incompressibleGas)
+    cloudName   dpiCloud;       // reads constant/<cloudName>Properties
+    \endverbatim
+
+    The fluid time step (controlDict deltaT) is the coupling interval; the
+    DEM sub-steps at dem/timeStep of the cloud dictionary.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "basicDPICloud.H"
+#include "incompressibleGas.H"
+#include "uniformDimensionedFields.H"
+#include "Enum.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    enum class fluidType { none, incompressible };
+
+    static const Enum<fluidType> fluidTypeNames
+    ({
+        { fluidType::none, "none" },
+        { fluidType::incompressible, "incompressible" },
+    });
+
+    //- A still, unsolved carrier for DEM-only scenes: the cloud's interface
+    //  wants fields, so these exist in memory only (never read or written)
+    static tmp<volScalarField> stillScalar
+    (
+        const fvMesh& mesh,
+        const word& name,
+        const dimensionedScalar& value
+    )
+    {
+        return tmp<volScalarField>::New
+        (
+            IOobject
+            (
+                name, mesh.time().timeName(), mesh,
+                IOobject::NO_READ, IOobject::NO_WRITE, false
+            ),
+            mesh,
+            value
+        );
+    }
+}
+
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "CFD-DEM solver for dry powder inhalers: carriers and coarse-grained"
+        " API parcels with Hertz contact, friction, rolling resistance and"
+        " cohesion, optionally in an incompressible gas."
+    );
+
+    #include "addCheckCaseOptions.H"
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createMesh.H"
+    #include "readGravitationalAcceleration.H"
+
+    IOdictionary couplingProperties
+    (
+        IOobject
+        (
+            "couplingProperties",
+            runTime.constant(),
+            mesh,
+            IOobject::MUST_READ
+        )
+    );
+
+    const fluidType fluid = fluidTypeNames.get("fluid", couplingProperties);
+    const word cloudName
+    (
+        couplingProperties.lookupOrDefault<word>("cloudName", "dpiCloud")
+    );
+
+    Info<< "Fluid: " << fluidTypeNames[fluid] << nl << endl;
+
+    autoPtr<incompressibleGas> gas;
+    tmp<volScalarField> rhoStill;
+    tmp<volScalarField> muStill;
+    autoPtr<volVectorField> UStill;
+
+    if (fluid == fluidType::incompressible)
+    {
+        gas.reset(new incompressibleGas(mesh, g));
+    }
+    else
+    {
+        rhoStill = stillScalar(mesh, "rho.none", dimensionedScalar(dimDensity, 1));
+        muStill = stillScalar(mesh, "mu.none", dimensionedScalar(dimDynamicViscosity, 0));
+        UStill.reset
+        (
+            new volVectorField
+            (
+                IOobject
+                (
+                    "U.none", runTime.timeName(), mesh,
+                    IOobject::NO_READ, IOobject::NO_WRITE, false
+                ),
+                mesh,
+                dimensionedVector(dimVelocity, Zero)
+            )
+        );
+    }
+
+    Info<< "Constructing cloud " << cloudName << endl;
+    basicDPICloud cloud
+    (
+        cloudName,
+        gas.valid() ? gas->rhoc() : rhoStill(),
+        gas.valid() ? gas->Uc() : UStill(),
+        gas.valid() ? gas->muc() : muStill(),
+        g
+    );
+
+    if (gas.valid())
+    {
+        gas->attach(cloud);
+    }
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.run())
+    {
+        ++runTime;
+
+        Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        if (gas.valid())
+        {
+            gas->correctTransport();
+        }
+
+        Info<< "Evolving " << cloud.name() << endl;
+        cloud.evolve();
+
+        if (gas.valid())
+        {
+            gas->solve(cloud);
+        }
+
+        runTime.write();
+
+        runTime.printExecutionTime(Info);
+    }
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

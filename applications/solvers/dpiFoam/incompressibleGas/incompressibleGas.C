@@ -1,0 +1,318 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+\*---------------------------------------------------------------------------*/
+
+#include "incompressibleGas.H"
+#include "fixedFluxPressureFvPatchScalarField.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::word Foam::incompressibleGas::readPhaseName(const fvMesh& mesh)
+{
+    return IOdictionary
+    (
+        IOobject
+        (
+            "transportProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ
+        )
+    ).get<word>("continuousPhase");
+}
+
+
+void Foam::incompressibleGas::updateVoidFraction(const basicDPICloud& cloud)
+{
+    alphac_ = max(1.0 - cloud.theta(), alphacMin_);
+    alphac_.correctBoundaryConditions();
+    alphacf_ = fvc::interpolate(alphac_);
+    alphaPhic_ = alphacf_*phic_;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::incompressibleGas::incompressibleGas
+(
+    fvMesh& mesh,
+    const uniformDimensionedVectorField& g
+)
+:
+    mesh_(mesh),
+    g_(g),
+    pimple_(mesh),
+    phaseName_(readPhaseName(mesh)),
+    Uc_
+    (
+        IOobject
+        (
+            IOobject::groupName("U", phaseName_),
+            mesh.time().timeName(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh
+    ),
+    p_
+    (
+        IOobject
+        (
+            "p",
+            mesh.time().timeName(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh
+    ),
+    phic_
+    (
+        IOobject
+        (
+            IOobject::groupName("phi", phaseName_),
+            mesh.time().timeName(),
+            mesh,
+            IOobject::READ_IF_PRESENT,
+            IOobject::AUTO_WRITE
+        ),
+        linearInterpolate(Uc_) & mesh.Sf()
+    ),
+    pRefCell_(0),
+    pRefValue_(0),
+    transport_(Uc_, phic_),
+    rhoc_
+    (
+        IOobject
+        (
+            IOobject::groupName("rho", phaseName_),
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        ),
+        mesh,
+        dimensionedScalar
+        (
+            IOobject::groupName("rho", phaseName_),
+            dimDensity,
+            transport_
+        )
+    ),
+    muc_
+    (
+        IOobject
+        (
+            IOobject::groupName("mu", phaseName_),
+            mesh.time().timeName(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::AUTO_WRITE
+        ),
+        rhoc_*transport_.nu()
+    ),
+    alphac_
+    (
+        IOobject
+        (
+            IOobject::groupName("alpha", phaseName_),
+            mesh.time().timeName(),
+            mesh,
+            IOobject::READ_IF_PRESENT,
+            IOobject::AUTO_WRITE
+        ),
+        mesh,
+        dimensionedScalar(dimless, 1)
+    ),
+    alphacMin_(0),
+    alphacf_("alphacf", fvc::interpolate(alphac_)),
+    alphaPhic_(IOobject::groupName("alphaPhi", phaseName_), alphacf_*phic_),
+    turbulence_(nullptr),
+    cumulativeContErr_(0)
+{
+    setRefCell(p_, pimple_.dict(), pRefCell_, pRefValue_);
+    mesh.setFluxRequired(p_.name());
+
+    turbulence_ = turbulenceModelType::New
+    (
+        alphac_,
+        Uc_,
+        alphaPhic_,
+        phic_,
+        transport_
+    );
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::incompressibleGas::attach(const basicDPICloud& cloud)
+{
+    const dictionary& cp =
+        cloud.particleProperties().subDict("constantProperties");
+
+    const scalar alphaMax = cp.get<scalar>("alphaMax");
+    if (alphaMax <= 0 || alphaMax >= 1)
+    {
+        FatalIOErrorInFunction(cp)
+            << "constantProperties/alphaMax = " << alphaMax
+            << " in " << cloud.particleProperties().name()
+            << " must lie in (0, 1): the void fraction floor is 1 - alphaMax"
+            << exit(FatalIOError);
+    }
+    alphacMin_ = 1 - alphaMax;
+
+    updateVoidFraction(cloud);
+}
+
+
+void Foam::incompressibleGas::correctTransport()
+{
+    transport_.correct();
+    muc_ = rhoc_*transport_.nu();
+}
+
+
+void Foam::incompressibleGas::solve(basicDPICloud& cloud)
+{
+    const Time& runTime = mesh_.time();
+    volVectorField& Uc = Uc_;
+    volScalarField& p = p_;
+    surfaceScalarField& phic = phic_;
+
+    updateVoidFraction(cloud);
+
+    // Cloud momentum source: the implicit part stays in the momentum matrix,
+    // the explicit part becomes a face force in the pressure equation
+    fvVectorMatrix cloudSU(cloud.SU(Uc));
+
+    volVectorField cloudVolSUSu
+    (
+        IOobject("cloudVolSUSu", runTime.timeName(), mesh_),
+        mesh_,
+        dimensionedVector(cloudSU.dimensions()/dimVolume, Zero),
+        zeroGradientFvPatchVectorField::typeName
+    );
+    cloudVolSUSu.primitiveFieldRef() = -cloudSU.source()/mesh_.V();
+    cloudVolSUSu.correctBoundaryConditions();
+    cloudSU.source() = Zero;
+
+    {
+        scalarField sumPhi
+        (
+            fvc::surfaceSum(mag(phic))().primitiveField()
+        );
+        const scalar CoNum =
+            0.5*gMax(sumPhi/mesh_.V().field())*runTime.deltaTValue();
+        Info<< "Courant Number max: " << CoNum << endl;
+    }
+
+    while (pimple_.loop())
+    {
+        fvVectorMatrix UcEqn
+        (
+            fvm::ddt(alphac_, Uc) + fvm::div(alphaPhic_, Uc)
+          - fvm::Sp(fvc::ddt(alphac_) + fvc::div(alphaPhic_), Uc)
+          + turbulence_->divDevRhoReff(Uc)
+         ==
+            (1.0/rhoc_)*cloudSU
+        );
+
+        UcEqn.relax();
+
+        volScalarField rAUc(1.0/UcEqn.A());
+        surfaceScalarField rAUcf("Dp", fvc::interpolate(rAUc));
+
+        // Explicit cloud force and gravity as face fluxes (p is kinematic
+        // and excludes the hydrostatic part)
+        surfaceScalarField phicForces
+        (
+            fvc::flux(rAUc*cloudVolSUSu/rhoc_) + rAUcf*(g_ & mesh_.Sf())
+        );
+
+        if (pimple_.momentumPredictor())
+        {
+            Foam::solve
+            (
+                UcEqn
+             ==
+                fvc::reconstruct
+                (
+                    phicForces/rAUcf - fvc::snGrad(p)*mesh_.magSf()
+                )
+            );
+        }
+
+        while (pimple_.correct())
+        {
+            volVectorField HbyA(constrainHbyA(rAUc*UcEqn.H(), Uc, p));
+
+            surfaceScalarField phiHbyA
+            (
+                "phiHbyA",
+                fvc::flux(HbyA) + alphacf_*rAUcf*fvc::ddtCorr(Uc, phic)
+            );
+
+            if (p.needReference())
+            {
+                adjustPhi(phiHbyA, Uc, p);
+            }
+
+            phiHbyA += phicForces;
+
+            constrainPressure(p, Uc, phiHbyA, rAUcf);
+
+            while (pimple_.correctNonOrthogonal())
+            {
+                fvScalarMatrix pEqn
+                (
+                    fvm::laplacian(alphacf_*rAUcf, p)
+                 ==
+                    fvc::ddt(alphac_) + fvc::div(alphacf_*phiHbyA)
+                );
+
+                pEqn.setReference(pRefCell_, pRefValue_);
+                pEqn.solve(mesh_.solver(p.select(pimple_.finalInnerIter())));
+
+                if (pimple_.finalNonOrthogonalIter())
+                {
+                    phic = phiHbyA - pEqn.flux()/alphacf_;
+                    p.relax();
+                    Uc = HbyA
+                      + rAUc*fvc::reconstruct
+                        (
+                            (phicForces - pEqn.flux()/alphacf_)/rAUcf
+                        );
+                    Uc.correctBoundaryConditions();
+                }
+            }
+
+            // Continuity error of the gas with void fraction
+            volScalarField contErr
+            (
+                fvc::ddt(alphac_) + fvc::div(alphacf_*phic)
+            );
+            const scalar sumLocalContErr =
+                runTime.deltaTValue()
+               *mag(contErr)().weightedAverage(mesh_.V()).value();
+            const scalar globalContErr =
+                runTime.deltaTValue()
+               *contErr.weightedAverage(mesh_.V()).value();
+            cumulativeContErr_ += globalContErr;
+            Info<< "time step continuity errors : sum local = "
+                << sumLocalContErr << ", global = " << globalContErr
+                << ", cumulative = " << cumulativeContErr_ << endl;
+        }
+
+        if (pimple_.turbCorr())
+        {
+            turbulence_->correct();
+        }
+    }
+
+    alphaPhic_ = alphacf_*phic;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,516 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+\*---------------------------------------------------------------------------*/
+
+#include "DPICloud.H"
+#include "ListOps.H"
+#include "PstreamCombineReduceOps.H"
+#include "mathematicalConstants.H"
+#include "clockTime.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    //- Element-wise sum over all processors
+    template<class T>
+    static List<T> globalSum(const List<T>& local)
+    {
+        List<T> sum(local);
+        Pstream::listCombineGather(sum, plusEqOp<T>());
+        Pstream::listCombineScatter(sum);
+        return sum;
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::DPICloud<CloudType>::setModels()
+{
+    const dictionary& props = this->particleProperties();
+
+    if (!props.found("dem"))
+    {
+        FatalIOErrorInFunction(props)
+            << "Missing sub-dictionary 'dem' in " << props.name() << nl
+            << "    it holds the DEM time step, materials and contact models"
+            << exit(FatalIOError);
+    }
+
+    engine_.reset(new demEngine(props.subDict("dem"), &this->mesh()));
+
+    injectors_.clear();
+    if (props.found("injectors"))
+    {
+        const dictionary& injDict = props.subDict("injectors");
+        const wordList names(injDict.toc());
+        injectors_.setSize(names.size());
+        forAll(names, i)
+        {
+            injectors_.set
+            (
+                i,
+                dpiInjectionModel::New(names[i], injDict.subDict(names[i]))
+            );
+        }
+    }
+
+    if (props.found("trace"))
+    {
+        const Time& time = this->mesh().time();
+        trace_.reset
+        (
+            new demTrace
+            (
+                props.subDict("trace"),
+                time.globalPath()/"postProcessing"/this->name()/"trace"
+               /time.timeName()
+            )
+        );
+    }
+
+    const label nPatches = this->mesh().boundaryMesh().size();
+    escapedParcels_.setSize(nPatches, 0);
+    escapedPrimaries_.setSize(nPatches, 0);
+    lostParcels_.setSize(nPatches, 0);
+}
+
+
+template<class CloudType>
+void Foam::DPICloud<CloudType>::readState()
+{
+    const dictionary dpiDict
+    (
+        this->outputProperties().subOrEmptyDict("dpiCloud")
+    );
+
+    nextGlobalId_ = dpiDict.lookupOrDefault<label>("nextGlobalId", 0);
+
+    // Parcels read from a restart carry their ids: never reissue one
+    label maxId = -1;
+    for (const parcelType& p : *this)
+    {
+        maxId = max(maxId, p.globalId());
+    }
+    reduce(maxId, maxOp<label>());
+    nextGlobalId_ = max(nextGlobalId_, maxId + 1);
+
+    const polyBoundaryMesh& pbm = this->mesh().boundaryMesh();
+    const dictionary escDict
+    (
+        Pstream::master() ? dpiDict.subOrEmptyDict("escaped") : dictionary()
+    );
+    forAll(pbm, patchi)
+    {
+        const dictionary d(escDict.subOrEmptyDict(pbm[patchi].name()));
+        escapedParcels_[patchi] = d.lookupOrDefault<label>("parcels", 0);
+        escapedPrimaries_[patchi] = d.lookupOrDefault<scalar>("primaries", 0);
+        lostParcels_[patchi] = d.lookupOrDefault<label>("lostParcels", 0);
+    }
+}
+
+
+template<class CloudType>
+void Foam::DPICloud<CloudType>::storeCounters()
+{
+    dictionary dpiDict;
+    dpiDict.add("nextGlobalId", nextGlobalId_);
+
+    // Global sums, the same on every processor (readState gives them back
+    // to the master only, so a restart on any decomposition counts once)
+    const labelList escParcels(globalSum(escapedParcels_));
+    const scalarList escPrim(globalSum(escapedPrimaries_));
+    const labelList lost(globalSum(lostParcels_));
+
+    dictionary escDict;
+    const polyBoundaryMesh& pbm = this->mesh().boundaryMesh();
+    forAll(pbm, patchi)
+    {
+        if (escParcels[patchi] || lost[patchi])
+        {
+            dictionary d;
+            d.add("parcels", escParcels[patchi]);
+            d.add("primaries", escPrim[patchi]);
+            d.add("lostParcels", lost[patchi]);
+            escDict.add(pbm[patchi].name(), d);
+        }
+    }
+    dpiDict.add("escaped", escDict);
+
+    this->outputProperties().set("dpiCloud", dpiDict);
+}
+
+
+template<class CloudType>
+void Foam::DPICloud<CloudType>::inject(const scalar t0, const scalar t1)
+{
+    DynamicList<injectedParticle> specs;
+    forAll(injectors_, i)
+    {
+        injectors_[i].inject(t0, t1, specs);
+    }
+
+    if (returnReduce(specs.empty(), andOp<bool>()))
+    {
+        return;
+    }
+
+    const fvMesh& mesh = this->mesh();
+    const demMaterials& mat = engine_->materials();
+
+    // Owner processor of each position: local octree search, then one
+    // element-wise min over processors (lowest processor wins, so the owner
+    // does not depend on search order)
+    const label notFound = Pstream::nProcs();
+    labelList owner(specs.size(), notFound);
+    labelList cell(specs.size(), -1);
+    forAll(specs, i)
+    {
+        cell[i] = mesh.findCell(specs[i].position);
+        if (cell[i] >= 0)
+        {
+            owner[i] = Pstream::myProcNo();
+        }
+    }
+    Pstream::listCombineGather(owner, minEqOp<label>());
+    Pstream::listCombineScatter(owner);
+
+    forAll(specs, i)
+    {
+        if (owner[i] == notFound)
+        {
+            FatalIOErrorInFunction(this->particleProperties())
+                << "A particle of type " << specs[i].type
+                << " is injected at " << specs[i].position
+                << ", outside the mesh (bounds " << mesh.bounds() << ")." << nl
+                << "    Check 'injectors' in " << this->particleProperties().name()
+                << exit(FatalIOError);
+        }
+    }
+
+    // Types are checked on every processor so that all stop together
+    const dictionary& injDict = this->particleProperties().subDict("injectors");
+    forAll(specs, i)
+    {
+        const label typei = mat.typeIndex(specs[i].type, injDict, "type");
+        if (!mat.isParticleType(typei))
+        {
+            FatalIOErrorInFunction(injDict)
+                << "Injected type " << specs[i].type << " has no diameter:"
+                << " it is a wall material in dem/types" << exit(FatalIOError);
+        }
+    }
+
+    forAll(specs, i)
+    {
+        const injectedParticle& s = specs[i];
+
+        // Same on every processor: ids follow the list order
+        const label gid = nextGlobalId_ + i;
+
+        if (owner[i] != Pstream::myProcNo())
+        {
+            continue;
+        }
+
+        const label typei = mat.typeIndex(s.type, injDict, "type");
+
+        parcelType* pPtr = new parcelType(mesh, s.position, cell[i]);
+        parcelType& p = *pPtr;
+
+        p.typeId() = typei;
+        p.d() = (s.d > 0 ? s.d : mat.diameter(typei));
+        p.dTarget() = p.d();
+        p.rho() = mat.density(typei);
+        p.N() = mat.N(typei);
+        p.U() = s.U;
+        p.omega() = s.omega;
+        p.xDEM() = s.position;
+        p.globalId() = gid;
+        p.agglomerateId() = gid;
+
+        this->addParticle(pPtr);
+    }
+
+    nextGlobalId_ += specs.size();
+
+    Info<< "    Injected " << specs.size() << " parcels" << endl;
+}
+
+
+template<class CloudType>
+void Foam::DPICloud<CloudType>::copyToState()
+{
+    state_.clear();
+
+    for (const parcelType& p : *this)
+    {
+        state_.append
+        (
+            p.xDEM(),
+            p.U(),
+            p.omega(),
+            0.5*p.d(),
+            p.primaryMass(),
+            p.N(),
+            p.typeId(),
+            p.globalId()
+        );
+
+        engine_->setHistory(p.globalId(), p.contactKeys(), p.contactXi());
+    }
+}
+
+
+template<class CloudType>
+void Foam::DPICloud<CloudType>::copyFromState()
+{
+    DynamicList<label> keys;
+    DynamicList<vector> xi;
+
+    label i = 0;
+    for (parcelType& p : *this)
+    {
+        p.xDEM() = state_.x[i];
+        p.U() = state_.v[i];
+        p.omega() = state_.omega[i];
+        p.f() = state_.f[i];
+
+        keys.clear();
+        xi.clear();
+        engine_->history(p.globalId(), keys, xi);
+        p.contactKeys() = keys;
+        p.contactXi() = xi;
+        ++i;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::DPICloud<CloudType>::DPICloud
+(
+    const word& cloudName,
+    const volScalarField& rho,
+    const volVectorField& U,
+    const volScalarField& mu,
+    const dimensionedVector& g,
+    bool readFields
+)
+:
+    CloudType(cloudName, rho, U, mu, g, false),
+    cloudCopyPtr_(nullptr),
+    engine_(nullptr),
+    injectors_(),
+    nextGlobalId_(0),
+    state_(),
+    observer_(nullptr),
+    trace_(nullptr),
+    escapedParcels_(),
+    escapedPrimaries_(),
+    lostParcels_()
+{
+    if (this->solution().active())
+    {
+        setModels();
+
+        if (readFields)
+        {
+            parcelType::readFields(*this);
+            this->deleteLostParticles();
+        }
+
+        readState();
+    }
+}
+
+
+template<class CloudType>
+Foam::DPICloud<CloudType>::DPICloud
+(
+    DPICloud<CloudType>& c,
+    const word& name
+)
+:
+    CloudType(c, name),
+    cloudCopyPtr_(nullptr),
+    engine_(nullptr),
+    injectors_(),
+    nextGlobalId_(c.nextGlobalId_),
+    state_(),
+    observer_(nullptr),
+    trace_(nullptr),
+    escapedParcels_(c.escapedParcels_),
+    escapedPrimaries_(c.escapedPrimaries_),
+    lostParcels_(c.lostParcels_)
+{}
+
+
+template<class CloudType>
+Foam::DPICloud<CloudType>::DPICloud
+(
+    const fvMesh& mesh,
+    const word& name,
+    const DPICloud<CloudType>& c
+)
+:
+    CloudType(mesh, name, c),
+    cloudCopyPtr_(nullptr),
+    engine_(nullptr),
+    injectors_(),
+    nextGlobalId_(c.nextGlobalId_),
+    state_(),
+    observer_(nullptr),
+    trace_(nullptr),
+    escapedParcels_(),
+    escapedPrimaries_(),
+    lostParcels_()
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::scalar Foam::DPICloud<CloudType>::nPrimaries(const label typeId) const
+{
+    scalar n = 0;
+    for (const parcelType& p : *this)
+    {
+        if (p.typeId() == typeId)
+        {
+            n += p.N();
+        }
+    }
+    return returnReduce(n, sumOp<scalar>());
+}
+
+
+template<class CloudType>
+void Foam::DPICloud<CloudType>::recordEscapedParcel
+(
+    const parcelType& p,
+    const polyPatch& pp
+)
+{
+    ++escapedParcels_[pp.index()];
+    escapedPrimaries_[pp.index()] += p.N();
+}
+
+
+template<class CloudType>
+void Foam::DPICloud<CloudType>::recordLostParcel
+(
+    const parcelType& p,
+    const polyPatch& pp
+)
+{
+    ++lostParcels_[pp.index()];
+    WarningInFunction
+        << "Parcel " << p.globalId() << " passed through wall patch "
+        << pp.name() << " (DEM position " << p.xDEM()
+        << "); removed. Is the patch listed in dem/walls?" << endl;
+}
+
+
+template<class CloudType>
+void Foam::DPICloud<CloudType>::storeState()
+{
+    cloudCopyPtr_.reset
+    (
+        static_cast<DPICloud<CloudType>*>
+        (
+            clone(this->name() + "Copy").ptr()
+        )
+    );
+}
+
+
+template<class CloudType>
+void Foam::DPICloud<CloudType>::restoreState()
+{
+    this->cloudReset(cloudCopyPtr_());
+    cloudCopyPtr_.clear();
+}
+
+
+template<class CloudType>
+void Foam::DPICloud<CloudType>::evolve()
+{
+    if (this->solution().canEvolve())
+    {
+        typename parcelType::trackingData td(*this);
+        this->solve(*this, td);
+    }
+}
+
+
+template<class CloudType>
+template<class TrackCloudType>
+void Foam::DPICloud<CloudType>::motion
+(
+    TrackCloudType& cloud,
+    typename parcelType::trackingData& td
+)
+{
+    const Time& time = this->db().time();
+    const scalar Dt = time.deltaTValue();
+    const scalar t1 = time.value();
+
+    inject(t1 - Dt, t1);
+
+    copyToState();
+
+    demObserver* obs = observer_;
+    if (!obs && trace_.valid())
+    {
+        trace_->beginStep(t1 - Dt, engine_->deltaT());
+        obs = trace_.get();
+    }
+
+    engine_->evolve(state_, Dt, this->g().value(), obs);
+
+    copyFromState();
+
+    // Relocate every parcel to its DEM position: one tracking pass, which
+    // also hands parcels over to neighbouring processors
+    CloudType::move(cloud, td, Dt);
+
+    storeCounters();
+}
+
+
+template<class CloudType>
+void Foam::DPICloud<CloudType>::info()
+{
+    CloudType::info();
+
+    const demMaterials& mat = engine_->materials();
+    forAll(mat.names(), typei)
+    {
+        Info<< "    Primaries of type " << mat.names()[typei]
+            << " = " << nPrimaries(typei) << nl;
+    }
+
+    const labelList escParcels(globalSum(escapedParcels_));
+    const scalarList escPrim(globalSum(escapedPrimaries_));
+    const labelList lost(globalSum(lostParcels_));
+    const polyBoundaryMesh& pbm = this->mesh().boundaryMesh();
+    forAll(pbm, patchi)
+    {
+        if (escParcels[patchi] || lost[patchi])
+        {
+            Info<< "    Patch " << pbm[patchi].name()
+                << ": escaped parcels " << escParcels[patchi]
+                << " (primaries " << escPrim[patchi] << ")"
+                << ", lost through wall " << lost[patchi] << nl;
+        }
+    }
+
+    engine_->info(Info);
+}
+
+
+// ************************************************************************* //

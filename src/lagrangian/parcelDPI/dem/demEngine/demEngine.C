@@ -1,0 +1,1039 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+\*---------------------------------------------------------------------------*/
+
+#include "demEngine.H"
+#include "pairScaling.H"
+#include "demContact.H"
+#include "polyMesh.H"
+#include <algorithm>
+#include <chrono>
+#include <vector>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(demEngine, 0);
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Wall-clock seconds since an arbitrary origin
+inline double wallClock()
+{
+    return std::chrono::duration<double>
+    (
+        std::chrono::steady_clock::now().time_since_epoch()
+    ).count();
+}
+
+//- Walls are packed with 7 bits in the history partner key
+const Foam::label maxWalls = 128;
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::demEngine::readWalls(const dictionary& dict, const polyMesh* mesh)
+{
+    const dictionary* wallsDict = dict.findDict("walls");
+    if (!wallsDict)
+    {
+        return;
+    }
+
+    const wordList names(wallsDict->toc());
+
+    if (names.size() > maxWalls)
+    {
+        FatalIOErrorInFunction(*wallsDict)
+            << names.size() << " walls in dictionary " << wallsDict->name()
+            << "; at most " << maxWalls << " are supported (merge walls of "
+            << "the same material into one triangles or patch wall)"
+            << exit(FatalIOError);
+    }
+
+    walls_.setSize(names.size());
+    wallMaterial_.setSize(names.size());
+
+    forAll(names, wi)
+    {
+        const dictionary& wd = wallsDict->subDict(names[wi]);
+        walls_.set(wi, demWall::New(names[wi], wd, mesh));
+        wallMaterial_[wi] =
+            materials_.typeIndex(walls_[wi].material(), wd, "material");
+    }
+}
+
+
+Foam::scalar Foam::demEngine::defaultSkin() const
+{
+    scalar dMin = GREAT;
+    for (label i = 0; i < materials_.size(); ++i)
+    {
+        if (materials_.isParticleType(i))
+        {
+            dMin = min(dMin, materials_.diameter(i));
+        }
+    }
+    return dMin < GREAT ? dMin : 0;
+}
+
+
+void Foam::demEngine::checkTimeStep(const dictionary& dict) const
+{
+    const demMaterials& mat = materials_;
+    const scalar v = maxImpactVelocity_;
+    const scalar dt = timeStep_;
+
+    Info<< nl << "DEM time-step check: timeStep " << dt
+        << " s, maxImpactVelocity " << v << " m/s" << nl
+        << "    Hertz contact time t_H (elastic, dynamic reduced mass), "
+        << "limits: error above t_H/3, warning above t_H/10" << nl
+        << "    " << setw(24) << "pair" << setw(13) << "R* [m]"
+        << setw(13) << "m_dyn [kg]" << setw(13) << "t_H [s]"
+        << setw(13) << "t_H/dt" << nl;
+
+    scalar worstRatio = GREAT;
+    word worstPair;
+    scalar worstTH = 0;
+
+    auto row = [&](const word& name, const scalar Rstar, const scalar m,
+                   const scalar tH)
+    {
+        Info<< "    " << setw(24) << name << setw(13) << Rstar
+            << setw(13) << m << setw(13) << tH << setw(13) << tH/dt << nl;
+
+        if (tH/dt < worstRatio)
+        {
+            worstRatio = tH/dt;
+            worstPair = name;
+            worstTH = tH;
+        }
+
+        if (dt > tH/10 && dt <= tH/3)
+        {
+            WarningInFunction
+                << "DEM timeStep " << dt << " s resolves a contact of "
+                << name << " with only " << tH/dt << " steps (t_H = " << tH
+                << " s at " << v << " m/s); 10 or more are advised"
+                << endl;
+        }
+    };
+
+    // Wall materials in use
+    labelList wallTypes(wallMaterial_);
+    Foam::sort(wallTypes);
+    wallTypes.setSize(std::unique(wallTypes.begin(), wallTypes.end())
+        - wallTypes.begin());
+
+    for (label i = 0; i < mat.size(); ++i)
+    {
+        if (!mat.isParticleType(i))
+        {
+            continue;
+        }
+        const scalar ri = 0.5*mat.diameter(i);
+        const scalar mi = mat.primaryMass(i);
+
+        for (label j = i; j < mat.size(); ++j)
+        {
+            if (!mat.isParticleType(j))
+            {
+                continue;
+            }
+            const scalar rj = 0.5*mat.diameter(j);
+            const scalar mj = mat.primaryMass(j);
+            const scalar Rstar = ri*rj/(ri + rj);
+            const scalar mdyn = pairScaling::dynamicReducedMass
+            (
+                mi, mat.N(i), mj, mat.N(j)
+            );
+            const scalar tH =
+                normal_->contactTime(mat.pair(i, j), Rstar, mdyn, v);
+
+            row(mat.names()[i] + "-" + mat.names()[j], Rstar, mdyn, tH);
+
+            // Theory 7.3: a parcel of N primaries approaching a carrier's
+            // mass breaks the "N primaries on one carrier" picture
+            const scalar Ni = mat.N(i), Nj = mat.N(j);
+            if (Ni != Nj)
+            {
+                const scalar ratio = (Ni > Nj) ? Ni*mi/mj : Nj*mj/mi;
+                if (ratio > 0.1)
+                {
+                    WarningInFunction
+                        << "Pair " << mat.names()[i] << "-"
+                        << mat.names()[j] << ": the parcel mass N m is "
+                        << ratio << " of its partner's; the carrier recoil"
+                        << " (theory 2.4) is no longer small (> 0.1)"
+                        << endl;
+                }
+            }
+        }
+
+        for (const label w : wallTypes)
+        {
+            const scalar mdyn = pairScaling::dynamicReducedMass(mi, mat.N(i));
+            const scalar tH = normal_->contactTime(mat.pair(i, w), ri, mdyn, v);
+            row
+            (
+                mat.names()[i] + "-" + mat.names()[w] + "(wall)",
+                ri,
+                mdyn,
+                tH
+            );
+        }
+    }
+
+    Info<< "    Rayleigh time T_R: warning above 0.3 T_R" << nl;
+    for (label i = 0; i < mat.size(); ++i)
+    {
+        if (!mat.isParticleType(i))
+        {
+            continue;
+        }
+        const scalar TR = mat.rayleighTime(i);
+        Info<< "    " << setw(24) << mat.names()[i] << "  T_R " << TR
+            << " s, timeStep/T_R " << dt/TR << nl;
+
+        if (dt > 0.3*TR)
+        {
+            WarningInFunction
+                << "DEM timeStep " << dt << " s is " << dt/TR
+                << " of the Rayleigh time of type " << mat.names()[i]
+                << " (T_R = " << TR << " s); 0.3 or less is advised"
+                << endl;
+        }
+    }
+    Info<< endl;
+
+    if (worstRatio < 3)
+    {
+        if (allowUnstable_)
+        {
+            WarningInFunction
+                << "DEM timeStep " << dt << " s is above the stability "
+                << "limit t_H/3 = " << worstTH/3 << " s of pair "
+                << worstPair << "; running anyway (allowUnstable true)"
+                << endl;
+        }
+        else
+        {
+            FatalIOErrorInFunction(dict)
+                << "DEM timeStep " << dt << " s in dictionary "
+                << dict.name() << " is above the stability limit t_H/3 = "
+                << worstTH/3 << " s of pair " << worstPair << nl
+                << "    (elastic Hertz contact time t_H = " << worstTH
+                << " s at maxImpactVelocity " << v << " m/s; velocity "
+                << "Verlet diverges near t_H/2)" << nl
+                << "Reduce timeStep to at most " << worstTH/3
+                << " s, or set timeStepCheck { allowUnstable true; }"
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::demEngine::checkState(const demState& s) const
+{
+    scalar coarseN = -1;
+    label coarseId = -1;
+
+    forAll(s.N, i)
+    {
+        const scalar Ni = s.N[i];
+        if (!(Ni > 0))
+        {
+            FatalErrorInFunction
+                << "Parcel " << s.globalId[i] << " has N = " << Ni
+                << "; the coarsening factor must be > 0"
+                << exit(FatalError);
+        }
+        if (Ni > 1)
+        {
+            if (coarseN < 0)
+            {
+                coarseN = Ni;
+                coarseId = s.globalId[i];
+            }
+            else if (Ni != coarseN)
+            {
+                FatalErrorInFunction
+                    << "Parcels " << coarseId << " (N " << coarseN
+                    << ") and " << s.globalId[i] << " (N " << Ni << ") are "
+                    << "coarse-grained with different N > 1: the pair factor"
+                    << " max(N_i, N_j) cannot conserve momentum between "
+                    << "them (theory 2.4). Use one N for all parcels."
+                    << exit(FatalError);
+            }
+        }
+        if (s.typeId[i] < 0 || s.typeId[i] >= materials_.size())
+        {
+            FatalErrorInFunction
+                << "Parcel " << s.globalId[i] << " has type index "
+                << s.typeId[i] << "; types: " << materials_.names()
+                << exit(FatalError);
+        }
+    }
+}
+
+
+void Foam::demEngine::flushHistory()
+{
+    if (!workingValid_)
+    {
+        return;
+    }
+
+    // The working arrays are the current truth for every contact they hold;
+    // contacts not in them have separated (the list covers all pairs within
+    // reach) so the store is rebuilt from them
+    history_.clear();
+
+    const DynamicList<labelPair>& pairs = search_.pairs();
+    forAll(pairs, k)
+    {
+        if (pairXi_[k] != vector::zero)
+        {
+            history_.set
+            (
+                workingIds_[pairs[k].first()],
+                workingIds_[pairs[k].second()],
+                pairXi_[k]
+            );
+        }
+    }
+
+    forAll(wallState_, p)
+    {
+        for (const wallContactState& w : wallState_[p])
+        {
+            history_.set
+            (
+                workingIds_[p],
+                wallPartnerKey(w.wall, w.key),
+                w.xi
+            );
+        }
+    }
+}
+
+
+void Foam::demEngine::rebuild(const demState& s)
+{
+    const double t0 = wallClock();
+
+    flushHistory();
+
+    const label n = s.size();
+
+    scalar rMax = 0;
+    for (const scalar r : s.r)
+    {
+        rMax = max(rMax, r);
+    }
+    const scalar range = cohesion_->maxRange(rMax);
+
+    search_.build(s, range);
+
+    // Walls must see every sphere within its radius plus cohesion range
+    const scalar reach = rMax + range;
+    if (reach > wallReach_)
+    {
+        // A little margin so a slightly larger parcel does not re-bin
+        wallReach_ = 1.1*reach;
+        for (demWall& w : walls_)
+        {
+            w.prepare(wallReach_);
+        }
+    }
+
+    // Working history from the store
+    const DynamicList<labelPair>& pairs = search_.pairs();
+    const label np = pairs.size();
+    pairXi_.setSize(np);
+    pairF_.setSize(np);
+    pairTi_.setSize(np);
+    pairTj_.setSize(np);
+    forAll(pairs, k)
+    {
+        pairXi_[k] = history_.find
+        (
+            s.globalId[pairs[k].first()],
+            s.globalId[pairs[k].second()]
+        );
+    }
+
+    wallState_.setSize(n);
+    DynamicList<label> keys;
+    DynamicList<vector> xis;
+    for (label p = 0; p < n; ++p)
+    {
+        wallState_[p].clear();
+        keys.clear();
+        xis.clear();
+        history_.history(s.globalId[p], keys, xis);
+        forAll(keys, c)
+        {
+            if (keys[c] < 0)
+            {
+                const label code = -1 - keys[c];
+                wallContactState w;
+                w.wall = code % maxWalls;
+                w.key = code/maxWalls;
+                w.n = Zero;     // unknown until the next evaluation
+                w.xi = xis[c];
+                wallState_[p].append(w);
+            }
+        }
+    }
+
+    workingIds_ = s.globalId;
+    workingValid_ = true;
+
+    // Per row, its pairs sorted by the partner's globalId, so the sums do
+    // not depend on the row order
+    csrStart_.setSize(n + 1);
+    csrStart_ = 0;
+    forAll(pairs, k)
+    {
+        ++csrStart_[pairs[k].first() + 1];
+        ++csrStart_[pairs[k].second() + 1];
+    }
+    for (label p = 0; p < n; ++p)
+    {
+        csrStart_[p + 1] += csrStart_[p];
+    }
+
+    csrCode_.setSize(2*np);
+    {
+        labelList fill(SubList<label>(csrStart_, n));
+        forAll(pairs, k)
+        {
+            csrCode_[fill[pairs[k].first()]++] = 2*k;
+            csrCode_[fill[pairs[k].second()]++] = 2*k + 1;
+        }
+    }
+
+    auto partnerId = [&](const label code)
+    {
+        const labelPair& pr = pairs[code/2];
+        return s.globalId[(code % 2) ? pr.first() : pr.second()];
+    };
+
+    for (label p = 0; p < n; ++p)
+    {
+        std::sort
+        (
+            csrCode_.begin() + csrStart_[p],
+            csrCode_.begin() + csrStart_[p + 1],
+            [&](const label a, const label b)
+            {
+                return partnerId(a) < partnerId(b);
+            }
+        );
+    }
+
+    timeNeighbour_ += wallClock() - t0;
+}
+
+
+void Foam::demEngine::pairForces(const demState& s, const bool advance)
+{
+    const DynamicList<labelPair>& pairs = search_.pairs();
+    const bool cohesive = cohesion_->active();
+    const bool rolls = rolling_->active();
+    const bool damping = normal_->tangentialDamping();
+    const bool rollScaled = rolling_->scaledWithN();
+
+    scalar rMax = 0;
+    for (const scalar r : s.r)
+    {
+        rMax = max(rMax, r);
+    }
+    const scalar maxRange = cohesion_->maxRange(rMax);
+
+    demContact c;
+    c.wall = false;
+    c.dt = advance ? timeStep_ : 0;
+
+    forAll(pairs, k)
+    {
+        const label i = pairs[k].first();
+        const label j = pairs[k].second();
+
+        pairF_[k] = Zero;
+        pairTi_[k] = Zero;
+        pairTj_[k] = Zero;
+
+        const vector d(s.x[i] - s.x[j]);
+        const scalar rSum = s.r[i] + s.r[j];
+        const scalar r2 = magSqr(d);
+
+        if (r2 >= sqr(rSum + maxRange))
+        {
+            if (advance)
+            {
+                pairXi_[k] = Zero;
+            }
+            continue;
+        }
+
+        const scalar r = sqrt(r2);
+        c.n = d/r;
+        c.delta = rSum - r;
+        c.props = &materials_.pair(s.typeId[i], s.typeId[j]);
+        c.Rstar = s.r[i]*s.r[j]/rSum;
+        c.mstar = s.m[i]*s.m[j]/(s.m[i] + s.m[j]);
+
+        const scalar S = pairScaling::pair(s.N[i], s.N[j]);
+
+        if (!c.touching())
+        {
+            if (advance)
+            {
+                pairXi_[k] = Zero;
+            }
+            if (cohesive && -c.delta < cohesion_->range(c))
+            {
+                pairF_[k] = (-S*cohesion_->force(c))*c.n;
+            }
+            continue;
+        }
+
+        c.ci = s.r[i] - 0.5*c.delta;
+        c.cj = s.r[j] - 0.5*c.delta;
+        const vector vr(s.v[i] - s.v[j]);
+        c.vn = vr & c.n;
+        c.vs = (vr - c.vn*c.n) - ((c.ci*s.omega[i] + c.cj*s.omega[j]) ^ c.n);
+        c.omegaRel = s.omega[i] - s.omega[j];
+
+        // Normal, cohesion, tangential, rolling (theory 1.6)
+        scalar fElastic = 0;
+        const scalar fn = normal_->force(c, fElastic);
+        vector F(fn*c.n);
+
+        if (cohesive)
+        {
+            F -= cohesion_->force(c)*c.n;
+        }
+
+        vector xi(pairXi_[k]);
+        const vector Ft(tangential_->force(c, fn, damping, xi));
+        if (advance)
+        {
+            pairXi_[k] = xi;
+        }
+        F += Ft;
+
+        vector Ti(-c.ci*(c.n ^ Ft));
+        vector Tj(-c.cj*(c.n ^ Ft));
+
+        pairF_[k] = S*F;
+        pairTi_[k] = S*Ti;
+        pairTj_[k] = S*Tj;
+
+        if (rolls)
+        {
+            const vector M(rolling_->torque(c, fElastic));
+            const scalar Sr = pairScaling::torqueFactor(S, rollScaled);
+            pairTi_[k] += Sr*M;
+            pairTj_[k] -= Sr*M;
+        }
+
+        ++diag_.nPairContacts;
+        diag_.maxOverlapRatio = max(diag_.maxOverlapRatio, c.delta/c.Rstar);
+    }
+}
+
+
+void Foam::demEngine::wallForces
+(
+    const demState& s,
+    const label p,
+    const bool advance
+)
+{
+    wallContrib_.clear();
+    wallNew_.clear();
+
+    if (walls_.empty())
+    {
+        return;
+    }
+
+    const bool cohesive = cohesion_->active();
+    const bool rolls = rolling_->active();
+    const bool damping = normal_->tangentialDamping();
+    const bool rollScaled = rolling_->scaledWithN();
+
+    const scalar rp = s.r[p];
+    const scalar reach = rp + cohesion_->maxRange(rp);
+    const scalar S = pairScaling::wall(s.N[p]);
+
+    demContact c;
+    c.wall = true;
+    c.dt = advance ? timeStep_ : 0;
+    c.Rstar = rp;
+    c.mstar = s.m[p];
+    c.cj = 0;
+    c.omegaRel = s.omega[p];
+
+    DynamicList<wallContactState>& old = wallState_[p];
+
+    forAll(walls_, w)
+    {
+        wallBuf_.clear();
+        walls_[w].findContacts(s.x[p], reach, wallBuf_);
+
+        for (const demWallContact& wc : wallBuf_)
+        {
+            c.n = wc.n;
+            c.delta = rp - wc.distance;
+            c.props = &materials_.pair(s.typeId[p], wallMaterial_[w]);
+
+            wallContribution contrib;
+            contrib.partnerKey = wallPartnerKey(w, wc.key);
+            contrib.f = Zero;
+            contrib.t = Zero;
+
+            if (!c.touching())
+            {
+                if (cohesive && -c.delta < cohesion_->range(c))
+                {
+                    contrib.f = (-S*cohesion_->force(c))*c.n;
+                    wallContrib_.append(contrib);
+                }
+                continue;
+            }
+
+            c.ci = rp - 0.5*c.delta;
+            c.vn = s.v[p] & c.n;
+            c.vs = (s.v[p] - c.vn*c.n) - ((c.ci*s.omega[p]) ^ c.n);
+
+            // The contact's history: same key, else a contact of the same
+            // wall that just moved to a neighbouring triangle (normals
+            // nearly parallel), else a new contact
+            vector xi(Zero);
+            label match = -1;
+            forAll(old, o)
+            {
+                if (old[o].wall == w && old[o].key == wc.key)
+                {
+                    match = o;
+                    break;
+                }
+            }
+            if (match < 0)
+            {
+                scalar best = 0.9;
+                forAll(old, o)
+                {
+                    if (old[o].wall == w && (old[o].n & c.n) > best)
+                    {
+                        bool taken = false;
+                        for (const wallContactState& nw : wallNew_)
+                        {
+                            taken = taken
+                             || (nw.wall == w && nw.key == old[o].key);
+                        }
+                        if (!taken)
+                        {
+                            best = old[o].n & c.n;
+                            match = o;
+                        }
+                    }
+                }
+            }
+            if (match >= 0)
+            {
+                xi = old[match].xi;
+            }
+
+            scalar fElastic = 0;
+            const scalar fn = normal_->force(c, fElastic);
+            vector F(fn*c.n);
+            if (cohesive)
+            {
+                F -= cohesion_->force(c)*c.n;
+            }
+
+            const vector Ft(tangential_->force(c, fn, damping, xi));
+            F += Ft;
+
+            contrib.f = S*F;
+            contrib.t = S*(-c.ci*(c.n ^ Ft));
+
+            if (rolls)
+            {
+                contrib.t +=
+                    pairScaling::torqueFactor(S, rollScaled)
+                   *rolling_->torque(c, fElastic);
+            }
+
+            wallContrib_.append(contrib);
+
+            if (advance)
+            {
+                wallContactState st;
+                st.wall = w;
+                st.key = wc.key;
+                st.n = c.n;
+                st.xi = xi;
+                wallNew_.append(st);
+            }
+
+            ++diag_.nWallContacts;
+            diag_.maxOverlapRatio = max(diag_.maxOverlapRatio, c.delta/rp);
+        }
+    }
+
+    if (advance)
+    {
+        old = wallNew_;
+    }
+
+    std::sort
+    (
+        wallContrib_.begin(),
+        wallContrib_.end(),
+        [](const wallContribution& a, const wallContribution& b)
+        {
+            return a.partnerKey < b.partnerKey;
+        }
+    );
+}
+
+
+void Foam::demEngine::evaluate(demState& s, const bool advance)
+{
+    const label n = s.size();
+
+    if (!workingValid_ || search_.needsRebuild(s))
+    {
+        rebuild(s);
+    }
+
+    diag_.nPairContacts = 0;
+    diag_.nWallContacts = 0;
+    diag_.maxOverlapRatio = 0;
+
+    double t0 = wallClock();
+
+    pairForces(s, advance);
+
+    fContact_.setSize(n);
+    tContact_.setSize(n);
+
+    for (label p = 0; p < n; ++p)
+    {
+        vector f(Zero);
+        vector t(Zero);
+        for (label e = csrStart_[p]; e < csrStart_[p + 1]; ++e)
+        {
+            const label code = csrCode_[e];
+            const label k = code/2;
+            if (code % 2)
+            {
+                f -= pairF_[k];
+                t += pairTj_[k];
+            }
+            else
+            {
+                f += pairF_[k];
+                t += pairTi_[k];
+            }
+        }
+        fContact_[p] = f;
+        tContact_[p] = t;
+    }
+
+    double t1 = wallClock();
+    timePair_ += t1 - t0;
+
+    for (label p = 0; p < n; ++p)
+    {
+        wallForces(s, p, advance);
+        for (const wallContribution& wc : wallContrib_)
+        {
+            fContact_[p] += wc.f;
+            tContact_[p] += wc.t;
+        }
+    }
+
+    timeWall_ += wallClock() - t1;
+
+    totalForces(s);
+}
+
+
+void Foam::demEngine::totalForces(demState& s) const
+{
+    forAll(s.x, p)
+    {
+        s.f[p] = fContact_[p] + (s.N[p]*s.m[p])*g_ + s.fExt[p];
+        s.torque[p] = tContact_[p];
+    }
+}
+
+
+bool Foam::demEngine::cacheMatches(const demState& s) const
+{
+    if (!cacheValid_ || s.size() != cacheX_.size())
+    {
+        return false;
+    }
+
+    forAll(cacheX_, p)
+    {
+        if
+        (
+            s.globalId[p] != cacheId_[p]
+         || s.x[p] != cacheX_[p]
+         || s.v[p] != cacheV_[p]
+         || s.omega[p] != cacheOmega_[p]
+        )
+        {
+            return false;
+        }
+    }
+
+    return true;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::demEngine::demEngine(const dictionary& dict, const polyMesh* mesh)
+:
+    timeStep_(dict.get<scalar>("timeStep")),
+    materials_(dict),
+    normal_(normalContactModel::New(dict)),
+    tangential_(tangentialContactModel::New(dict)),
+    rolling_(rollingContactModel::New(dict)),
+    cohesion_(cohesionContactModel::New(dict)),
+    walls_(),
+    wallMaterial_(),
+    search_(0),
+    maxImpactVelocity_(0),
+    allowUnstable_(false),
+    g_(Zero),
+    time_(0),
+    history_(),
+    workingValid_(false),
+    wallReach_(0),
+    cacheValid_(false),
+    diag_(),
+    timePair_(0),
+    timeWall_(0),
+    timeNeighbour_(0),
+    timeIntegrate_(0),
+    nSteps_(0),
+    nParticleSteps_(0)
+{
+    if (!(timeStep_ > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'timeStep' = " << timeStep_ << " in dictionary "
+            << dict.name() << " must be > 0" << exit(FatalIOError);
+    }
+
+    readWalls(dict, mesh);
+
+    const dictionary nsDict(dict.subOrEmptyDict("neighbourSearch"));
+    const scalar skin = nsDict.getOrDefault<scalar>("skin", defaultSkin());
+    if (!(skin > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "The neighbour-search skin must be > 0 (got " << skin
+            << "); set neighbourSearch { skin ...; } in dictionary "
+            << dict.name() << exit(FatalIOError);
+    }
+    search_ = neighbourSearch(skin);
+
+    const dictionary& tsDict = dict.subDict("timeStepCheck");
+    maxImpactVelocity_ = tsDict.get<scalar>("maxImpactVelocity");
+    if (!(maxImpactVelocity_ > 0))
+    {
+        FatalIOErrorInFunction(tsDict)
+            << "Entry 'maxImpactVelocity' = " << maxImpactVelocity_
+            << " in dictionary " << tsDict.name() << " must be > 0"
+            << exit(FatalIOError);
+    }
+    allowUnstable_ = tsDict.getOrDefault<bool>("allowUnstable", false);
+
+    Info<< "DEM engine: " << materials_.size() << " types "
+        << materials_.names() << ", " << walls_.size() << " walls, skin "
+        << skin << " m" << endl;
+
+    checkTimeStep(dict);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::demEngine::evolve
+(
+    demState& s,
+    const scalar Dt,
+    const vector& g,
+    demObserver* obs
+)
+{
+    const scalar ratio = Dt/timeStep_;
+    const label nSub = label(ratio + 0.5);
+
+    if (nSub < 0 || mag(ratio - nSub) > 1e-6)
+    {
+        FatalErrorInFunction
+            << "The fluid time step " << Dt << " s is not an integer "
+            << "multiple of the DEM timeStep " << timeStep_ << " s (ratio "
+            << ratio << ")" << exit(FatalError);
+    }
+    if (nSub == 0)
+    {
+        return;
+    }
+
+    checkState(s);
+
+    const label n = s.size();
+    const scalar dt = timeStep_;
+    const scalar t0 = time_;
+
+    g_ = g;
+
+    // Forces of the starting state: those of the last sub-step if the cloud
+    // has not touched the state since (so splitting a run into evolve calls
+    // changes nothing), else a re-evaluation that leaves the history as is
+    if (cacheMatches(s))
+    {
+        totalForces(s);
+    }
+    else
+    {
+        evaluate(s, false);
+    }
+
+    for (label step = 0; step < nSub; ++step)
+    {
+        double tc = wallClock();
+
+        for (label p = 0; p < n; ++p)
+        {
+            const scalar M = s.N[p]*s.m[p];
+            const scalar I = 0.4*M*sqr(s.r[p]);
+            s.v[p] += (0.5*dt/M)*s.f[p];
+            s.omega[p] += (0.5*dt/I)*s.torque[p];
+            s.x[p] += dt*s.v[p];
+        }
+
+        timeIntegrate_ += wallClock() - tc;
+
+        evaluate(s, true);
+
+        tc = wallClock();
+
+        scalar Ek = 0, Er = 0;
+        for (label p = 0; p < n; ++p)
+        {
+            const scalar M = s.N[p]*s.m[p];
+            const scalar I = 0.4*M*sqr(s.r[p]);
+            s.v[p] += (0.5*dt/M)*s.f[p];
+            s.omega[p] += (0.5*dt/I)*s.torque[p];
+            Ek += 0.5*M*magSqr(s.v[p]);
+            Er += 0.5*I*magSqr(s.omega[p]);
+        }
+
+        timeIntegrate_ += wallClock() - tc;
+
+        time_ = t0 + (step + 1)*dt;
+        diag_.time = time_;
+        diag_.kineticEnergy = Ek;
+        diag_.rotationalEnergy = Er;
+        ++nSteps_;
+        nParticleSteps_ += n;
+
+        if (obs)
+        {
+            obs->subStep(time_, s);
+        }
+    }
+
+    flushHistory();
+
+    cacheId_ = s.globalId;
+    cacheX_ = s.x;
+    cacheV_ = s.v;
+    cacheOmega_ = s.omega;
+    cacheValid_ = true;
+}
+
+
+void Foam::demEngine::evaluateForces(demState& s)
+{
+    checkState(s);
+    evaluate(s, true);
+    cacheValid_ = false;
+}
+
+
+void Foam::demEngine::history
+(
+    const label globalId,
+    DynamicList<label>& partnerKeys,
+    DynamicList<vector>& xi
+) const
+{
+    history_.history(globalId, partnerKeys, xi);
+}
+
+
+void Foam::demEngine::setHistory
+(
+    const label globalId,
+    const labelUList& partnerKeys,
+    const UList<vector>& xi
+)
+{
+    // Bring the store up to date before editing it; the working arrays are
+    // reloaded from it at the next evaluation
+    flushHistory();
+    workingValid_ = false;
+    cacheValid_ = false;
+    search_.clear();
+
+    history_.setHistory(globalId, partnerKeys, xi);
+}
+
+
+void Foam::demEngine::writePerformance(Ostream& os) const
+{
+    const scalar total =
+        timePair_ + timeWall_ + timeNeighbour_ + timeIntegrate_;
+
+    auto pct = [&](const scalar t)
+    {
+        return total > 0 ? 100*t/total : 0;
+    };
+
+    os  << "DEM performance: " << nSteps_ << " steps, "
+        << (total > 0 ? nParticleSteps_/total : 0) << " particle-steps/s"
+        << nl
+        << "    pair " << timePair_ << " s (" << pct(timePair_) << " %), "
+        << "wall " << timeWall_ << " s (" << pct(timeWall_) << " %), "
+        << "neighbour " << timeNeighbour_ << " s (" << pct(timeNeighbour_)
+        << " %, " << search_.nBuilds() << " builds), "
+        << "integrate " << timeIntegrate_ << " s ("
+        << pct(timeIntegrate_) << " %)" << endl;
+}
+
+
+// ************************************************************************* //

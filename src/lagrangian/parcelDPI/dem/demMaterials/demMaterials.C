@@ -1,0 +1,336 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+\*---------------------------------------------------------------------------*/
+
+#include "demMaterials.H"
+#include "mathematicalConstants.H"
+#include "HashSet.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Read a scalar and check a range; the message names dictionary, key,
+//  value and the allowed range so the user can fix the deck directly
+template<class Predicate>
+Foam::scalar readInRange
+(
+    const Foam::dictionary& dict,
+    const Foam::word& key,
+    const Predicate& inRange,
+    const char* rangeText
+)
+{
+    const Foam::scalar value = dict.get<Foam::scalar>(key);
+
+    if (!inRange(value))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry '" << key << "' = " << value << " in dictionary "
+            << dict.name() << " is out of range: must be " << rangeText
+            << Foam::exit(Foam::FatalIOError);
+    }
+
+    return value;
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::demMaterials::readType(const label typei, const dictionary& d)
+{
+    auto positive = [](const scalar x) { return x > 0; };
+
+    if (d.found("diameter"))
+    {
+        diameter_[typei] = readInRange(d, "diameter", positive, "> 0");
+        density_[typei] = readInRange(d, "density", positive, "> 0");
+    }
+    else
+    {
+        // A wall-only material: no particle of this type may exist, so
+        // diameter and density are not needed (walls have infinite mass)
+        diameter_[typei] = -1;
+        density_[typei] = d.getOrDefault<scalar>("density", -1);
+    }
+
+    youngsModulus_[typei] =
+        readInRange(d, "youngsModulus", positive, "> 0");
+
+    poissonsRatio_[typei] = readInRange
+    (
+        d,
+        "poissonsRatio",
+        [](const scalar x) { return x >= 0 && x <= 0.5; },
+        "0 <= poissonsRatio <= 0.5"
+    );
+
+    N_[typei] = 1;
+    if (d.found("N"))
+    {
+        N_[typei] = readInRange(d, "N", positive, "> 0 (carriers 1)");
+    }
+
+    api_[typei] = d.getOrDefault<bool>("api", N_[typei] > 1);
+}
+
+
+void Foam::demMaterials::readPairs(const dictionary& pairsDict)
+{
+    const label n = names_.size();
+
+    // Every name the user may write, to catch typos in the pair entries
+    wordHashSet validNames;
+    validNames.insert("default");
+    for (label i = 0; i < n; ++i)
+    {
+        for (label j = 0; j < n; ++j)
+        {
+            validNames.insert(names_[i] + "-" + names_[j]);
+        }
+    }
+
+    for (const word& key : pairsDict.toc())
+    {
+        if (!validNames.found(key))
+        {
+            FatalIOErrorInFunction(pairsDict)
+                << "Unknown pair entry '" << key << "' in dictionary "
+                << pairsDict.name() << nl
+                << "Pair entries are named typeA-typeB (either order) or "
+                << "default, with types " << names_
+                << exit(FatalIOError);
+        }
+    }
+
+    const dictionary* defaultDict =
+        pairsDict.findDict("default", keyType::LITERAL);
+
+    pairs_.setSize(n*n);
+
+    for (label i = 0; i < n; ++i)
+    {
+        for (label j = i; j < n; ++j)
+        {
+            const word ij(names_[i] + "-" + names_[j]);
+            const word ji(names_[j] + "-" + names_[i]);
+
+            const dictionary* pd = pairsDict.findDict(ij, keyType::LITERAL);
+            const dictionary* pdji =
+                pairsDict.findDict(ji, keyType::LITERAL);
+
+            if (pd && pdji && i != j)
+            {
+                FatalIOErrorInFunction(pairsDict)
+                    << "Pair " << ij << " is given twice (as " << ij
+                    << " and " << ji << ") in dictionary "
+                    << pairsDict.name() << exit(FatalIOError);
+            }
+            if (!pd)
+            {
+                pd = pdji;
+            }
+            if (!pd)
+            {
+                pd = defaultDict;
+            }
+            if (!pd)
+            {
+                FatalIOErrorInFunction(pairsDict)
+                    << "No properties for the pair " << ij
+                    << " and no 'default' entry in dictionary "
+                    << pairsDict.name() << nl
+                    << "Add an entry " << ij << " { restitution ..; "
+                    << "friction ..; rollingFriction ..; } or a default;"
+                    << " valid type names: " << names_
+                    << exit(FatalIOError);
+            }
+
+            // Keys missing from a specific entry fall back to the default
+            auto from = [&](const word& key) -> const dictionary&
+            {
+                if (!pd->found(key, keyType::LITERAL) && defaultDict)
+                {
+                    return *defaultDict;
+                }
+                return *pd;
+            };
+
+            demPairProperties p;
+            p.name = ij;
+
+            p.e = readInRange
+            (
+                from("restitution"),
+                "restitution",
+                [](const scalar x) { return x > 0.05 && x <= 1; },
+                "0.05 < restitution <= 1"
+            );
+
+            p.mu = readInRange
+            (
+                from("friction"),
+                "friction",
+                [](const scalar x) { return x >= 0; },
+                ">= 0"
+            );
+
+            p.muR = 0;
+            if (from("rollingFriction").found("rollingFriction"))
+            {
+                p.muR = readInRange
+                (
+                    from("rollingFriction"),
+                    "rollingFriction",
+                    [](const scalar x) { return x >= 0; },
+                    ">= 0"
+                );
+            }
+
+            // Theory 1.2 (the code's G*, not the Theory Guide's Eq. 14)
+            const scalar Yi = youngsModulus_[i], Yj = youngsModulus_[j];
+            const scalar nui = poissonsRatio_[i], nuj = poissonsRatio_[j];
+
+            p.Ystar = 1/((1 - sqr(nui))/Yi + (1 - sqr(nuj))/Yj);
+            p.Gstar = 1/
+            (
+                2*(2 - nui)*(1 + nui)/Yi
+              + 2*(2 - nuj)*(1 + nuj)/Yj
+            );
+
+            const scalar lne = log(p.e);
+            p.beta = lne/sqrt(sqr(lne) + sqr(constant::mathematical::pi));
+
+            pairs_[i*n + j] = p;
+            pairs_[j*n + i] = p;
+        }
+    }
+}
+
+
+void Foam::demMaterials::checkCoarsening(const dictionary& typesDict) const
+{
+    label firstCoarse = -1;
+
+    forAll(names_, i)
+    {
+        if (N_[i] > 1)
+        {
+            if (firstCoarse < 0)
+            {
+                firstCoarse = i;
+            }
+            else if (N_[i] != N_[firstCoarse])
+            {
+                FatalIOErrorInFunction(typesDict)
+                    << "Types " << names_[firstCoarse] << " (N "
+                    << N_[firstCoarse] << ") and " << names_[i] << " (N "
+                    << N_[i] << ") in dictionary " << typesDict.name()
+                    << " are both coarse-grained with different N." << nl
+                    << "The pair factor max(N_i, N_j) gives the smaller "
+                    << "parcel the wrong acceleration and cannot conserve "
+                    << "momentum (theory 2.4): use one N for all parcels "
+                    << "with N > 1."
+                    << exit(FatalIOError);
+            }
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::demMaterials::demMaterials(const dictionary& dict)
+{
+    const dictionary& typesDict = dict.subDict("types");
+
+    names_ = typesDict.toc();
+
+    if (names_.empty())
+    {
+        FatalIOErrorInFunction(typesDict)
+            << "No material types in dictionary " << typesDict.name()
+            << exit(FatalIOError);
+    }
+
+    const label n = names_.size();
+    diameter_.setSize(n);
+    density_.setSize(n);
+    youngsModulus_.setSize(n);
+    poissonsRatio_.setSize(n);
+    N_.setSize(n);
+    api_.setSize(n);
+
+    forAll(names_, i)
+    {
+        if (!typesDict.isDict(names_[i]))
+        {
+            FatalIOErrorInFunction(typesDict)
+                << "Entry '" << names_[i] << "' in dictionary "
+                << typesDict.name() << " is not a dictionary of material"
+                << " properties" << exit(FatalIOError);
+        }
+        readType(i, typesDict.subDict(names_[i]));
+    }
+
+    checkCoarsening(typesDict);
+
+    readPairs(dict.subDict("pairs"));
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::demMaterials::typeIndex
+(
+    const word& name,
+    const dictionary& context,
+    const word& keyword
+) const
+{
+    const label i = names_.find(name);
+
+    if (i < 0)
+    {
+        FatalIOErrorInFunction(context)
+            << "Unknown material type '" << name << "' for entry '"
+            << keyword << "' in dictionary " << context.name() << nl
+            << "Valid types: " << names_ << exit(FatalIOError);
+    }
+
+    return i;
+}
+
+
+Foam::scalar Foam::demMaterials::primaryMass(const label i) const
+{
+    return density_[i]*constant::mathematical::pi/6*pow3(diameter_[i]);
+}
+
+
+Foam::scalar Foam::demMaterials::rayleighTime(const label i) const
+{
+    const scalar nu = poissonsRatio_[i];
+    const scalar G = youngsModulus_[i]/(2*(1 + nu));
+
+    return
+        constant::mathematical::pi*0.5*diameter_[i]*sqrt(density_[i]/G)
+       /(0.1631*nu + 0.8766);
+}
+
+
+Foam::scalar Foam::demMaterials::parcelN() const
+{
+    scalar result = 1;
+    for (const scalar n : N_)
+    {
+        result = max(result, n);
+    }
+    return result;
+}
+
+
+// ************************************************************************* //

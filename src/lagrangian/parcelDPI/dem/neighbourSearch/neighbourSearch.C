@@ -1,0 +1,251 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+\*---------------------------------------------------------------------------*/
+
+#include "neighbourSearch.H"
+#include "SortableList.H"
+#include <algorithm>
+#include <unordered_map>
+#include <vector>
+#include <cstdint>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+// 21 bits per direction: 2 million cells across a level's grid
+const Foam::label maxCellsPerDir = 2097151;
+
+inline std::uint64_t cellKey
+(
+    const Foam::label i,
+    const Foam::label j,
+    const Foam::label k
+)
+{
+    return
+        (std::uint64_t(i) << 42) | (std::uint64_t(j) << 21)
+      | std::uint64_t(k);
+}
+
+//- One size level: its cell size and occupied cells
+struct level
+{
+    Foam::scalar h = 0;
+    Foam::scalar rMax = 0;
+
+    // (cell key, row), sorted by key
+    std::vector<std::pair<std::uint64_t, Foam::label>> entries;
+
+    // cell key -> [begin, end) in entries
+    std::unordered_map<std::uint64_t, std::pair<Foam::label, Foam::label>>
+        cells;
+};
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::neighbourSearch::neighbourSearch(const scalar skin)
+:
+    skin_(skin),
+    range_(0),
+    nLevels_(0),
+    nBuilds_(0),
+    valid_(false)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::neighbourSearch::needsRebuild(const demState& s) const
+{
+    if (!valid_ || s.size() != x0_.size())
+    {
+        return true;
+    }
+
+    const scalar maxMove2 = sqr(0.5*skin_);
+
+    forAll(x0_, i)
+    {
+        if
+        (
+            s.globalId[i] != id0_[i]
+         || magSqr(s.x[i] - x0_[i]) > maxMove2
+        )
+        {
+            return true;
+        }
+    }
+
+    return false;
+}
+
+
+void Foam::neighbourSearch::clear()
+{
+    valid_ = false;
+    pairs_.clear();
+}
+
+
+void Foam::neighbourSearch::build(const demState& s, const scalar range)
+{
+    const label n = s.size();
+
+    x0_ = s.x;
+    id0_ = s.globalId;
+    range_ = range;
+    pairs_.clear();
+    valid_ = true;
+    ++nBuilds_;
+    nLevels_ = 0;
+
+    if (n < 2)
+    {
+        return;
+    }
+
+    // Size levels: a level spans radii up to twice its smallest radius
+    SortableList<scalar> sortedR(s.r);
+    labelList levelOf(n);
+    std::vector<level> levels;
+    {
+        scalar r0 = sortedR[0];
+        levels.push_back(level());
+        forAll(sortedR, k)
+        {
+            if (sortedR[k] > 2*r0)
+            {
+                r0 = sortedR[k];
+                levels.push_back(level());
+            }
+            levelOf[sortedR.indices()[k]] = label(levels.size()) - 1;
+            levels.back().rMax = sortedR[k];
+        }
+    }
+    nLevels_ = label(levels.size());
+
+    // Grid box from the particles themselves
+    point lo(s.x[0]);
+    for (const point& p : s.x)
+    {
+        lo = min(lo, p);
+    }
+
+    for (level& lev : levels)
+    {
+        lev.h = 2*lev.rMax + range + skin_;
+    }
+
+    auto cellOf = [&](const point& p, const scalar h, label ijk[3])
+    {
+        for (direction d = 0; d < 3; ++d)
+        {
+            ijk[d] = label((p[d] - lo[d])/h);
+            if (ijk[d] >= maxCellsPerDir - 1)
+            {
+                FatalErrorInFunction
+                    << "The particles span " << (p[d] - lo[d])
+                    << " m in direction " << label(d) << ", more than "
+                    << maxCellsPerDir - 1 << " neighbour-search cells of "
+                    << h << " m" << nl << "A particle far from the others "
+                    << "(lost or diverging?) at " << p
+                    << exit(FatalError);
+            }
+        }
+    };
+
+    for (label i = 0; i < n; ++i)
+    {
+        level& lev = levels[levelOf[i]];
+        label ijk[3];
+        cellOf(s.x[i], lev.h, ijk);
+        lev.entries.push_back({cellKey(ijk[0], ijk[1], ijk[2]), i});
+    }
+
+    for (level& lev : levels)
+    {
+        std::sort(lev.entries.begin(), lev.entries.end());
+        const label m = label(lev.entries.size());
+        label b = 0;
+        while (b < m)
+        {
+            label e = b + 1;
+            while (e < m && lev.entries[e].first == lev.entries[b].first)
+            {
+                ++e;
+            }
+            lev.cells[lev.entries[b].first] = {b, e};
+            b = e;
+        }
+    }
+
+    // Each particle looks into its own level (larger rows only, so each
+    // pair once) and into every coarser level (all particles there)
+    for (label p = 0; p < n; ++p)
+    {
+        const label lp = levelOf[p];
+        const point& xp = s.x[p];
+        const scalar rp = s.r[p];
+
+        for (label L = lp; L < nLevels_; ++L)
+        {
+            const level& lev = levels[L];
+            label ijk[3];
+            cellOf(xp, lev.h, ijk);
+
+            for (label i = ijk[0] - 1; i <= ijk[0] + 1; ++i)
+            {
+                if (i < 0) continue;
+                for (label j = ijk[1] - 1; j <= ijk[1] + 1; ++j)
+                {
+                    if (j < 0) continue;
+                    for (label k = ijk[2] - 1; k <= ijk[2] + 1; ++k)
+                    {
+                        if (k < 0) continue;
+
+                        const auto iter = lev.cells.find(cellKey(i, j, k));
+                        if (iter == lev.cells.end())
+                        {
+                            continue;
+                        }
+
+                        for
+                        (
+                            label e = iter->second.first;
+                            e < iter->second.second;
+                            ++e
+                        )
+                        {
+                            const label q = lev.entries[e].second;
+                            if (L == lp && q <= p)
+                            {
+                                continue;
+                            }
+
+                            const scalar cut = rp + s.r[q] + range + skin_;
+                            if (magSqr(xp - s.x[q]) < sqr(cut))
+                            {
+                                if (s.globalId[p] < s.globalId[q])
+                                {
+                                    pairs_.append(labelPair(p, q));
+                                }
+                                else
+                                {
+                                    pairs_.append(labelPair(q, p));
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+}
+
+
+// ************************************************************************* //

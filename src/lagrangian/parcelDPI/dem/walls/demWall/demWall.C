@@ -1,0 +1,55 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+\*---------------------------------------------------------------------------*/
+
+#include "demWall.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(demWall, 0);
+    defineRunTimeSelectionTable(demWall, dictionary);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::demWall::demWall(const word& name, const dictionary& dict)
+:
+    name_(name),
+    material_(dict.get<word>("material"))
+{}
+
+
+// * * * * * * * * * * * * * * * * * Selector  * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::demWall> Foam::demWall::New
+(
+    const word& name,
+    const dictionary& dict,
+    const polyMesh* mesh
+)
+{
+    const word wallType(dict.get<word>("type"));
+
+    Info<< "Selecting DEM wall " << wallType << " for " << name << endl;
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(wallType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "DEM wall type",
+            wallType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    return autoPtr<demWall>(cstrIter()(name, dict, mesh));
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,68 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+\*---------------------------------------------------------------------------*/
+
+#include "planeWall.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace demWalls
+{
+    defineTypeNameAndDebug(planeWall, 0);
+    addToRunTimeSelectionTable(demWall, planeWall, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::demWalls::planeWall::planeWall
+(
+    const word& name,
+    const dictionary& dict,
+    const polyMesh*
+)
+:
+    demWall(name, dict),
+    origin_(dict.get<point>("point")),
+    normal_(dict.get<vector>("normal"))
+{
+    const scalar magN = mag(normal_);
+
+    if (magN < VSMALL)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'normal' of wall " << name << " in dictionary "
+            << dict.name() << " is a zero vector" << exit(FatalIOError);
+    }
+
+    normal_ /= magN;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::demWalls::planeWall::findContacts
+(
+    const point& x,
+    const scalar reach,
+    DynamicList<demWallContact>& contacts
+) const
+{
+    const scalar h = (x - origin_) & normal_;
+
+    if (mag(h) < reach)
+    {
+        demWallContact c;
+        c.key = 0;
+        c.n = (h >= 0) ? normal_ : -normal_;
+        c.distance = mag(h);
+        contacts.append(c);
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,32 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+-------------------------------------------------------------------------------
+Description
+    The stock KinematicCloud sub-models the cloud constructs (they must
+    exist even when `none`), registered for basicDPICloud's kinematic base.
+    dpiFoam's own models (contact, injection, forces) have their own
+    selection tables.
+
+\*---------------------------------------------------------------------------*/
+
+#include "basicDPICloud.H"
+
+#include "makeParcelCloudFunctionObjects.H"
+#include "makeParcelForces.H"
+#include "makeParcelDispersionModels.H"
+#include "makeParcelInjectionModels.H"
+#include "makeParcelPatchInteractionModels.H"
+#include "makeParcelStochasticCollisionModels.H"
+#include "makeParcelSurfaceFilmModels.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+makeParcelCloudFunctionObjects(basicDPICloud);
+makeParcelForces(basicDPICloud);
+makeParcelDispersionModels(basicDPICloud);
+makeParcelInjectionModels(basicDPICloud);
+makeParcelPatchInteractionModels(basicDPICloud);
+makeParcelStochasticCollisionModels(basicDPICloud);
+makeParcelSurfaceFilmModels(basicDPICloud);
+
+// ************************************************************************* //

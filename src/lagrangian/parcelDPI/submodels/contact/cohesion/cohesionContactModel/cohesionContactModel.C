@@ -1,0 +1,54 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+\*---------------------------------------------------------------------------*/
+
+#include "cohesionContactModel.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(cohesionContactModel, 0);
+    defineRunTimeSelectionTable(cohesionContactModel, dictionary);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::cohesionContactModel::cohesionContactModel
+(
+    const dictionary& dict,
+    const word& type
+)
+:
+    coeffDict_(dict.subOrEmptyDict(type + "Coeffs"))
+{}
+
+
+// * * * * * * * * * * * * * * * * * Selector  * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::cohesionContactModel>
+Foam::cohesionContactModel::New(const dictionary& dict)
+{
+    const word modelType(dict.get<word>("cohesionModel"));
+
+    Info<< "Selecting cohesion model " << modelType << endl;
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "cohesionModel",
+            modelType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    return autoPtr<cohesionContactModel>(cstrIter()(dict));
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,69 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+\*---------------------------------------------------------------------------*/
+
+#include "hertzParcel.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace normalContactModels
+{
+    defineTypeNameAndDebug(hertzParcel, 0);
+    addToRunTimeSelectionTable(normalContactModel, hertzParcel, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::normalContactModels::hertzParcel::hertzParcel(const dictionary& dict)
+:
+    normalContactModel(dict, typeName),
+    limitForce_(coeffDict_.getOrDefault<bool>("limitForce", false)),
+    tangentialDamping_
+    (
+        coeffDict_.getOrDefault<bool>("tangentialDamping", true)
+    )
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::normalContactModels::hertzParcel::force
+(
+    const demContact& c,
+    scalar& fElastic
+) const
+{
+    const scalar sqrtRd = sqrt(c.Rstar*c.delta);
+    const scalar kn = (4.0/3.0)*c.props->Ystar*sqrtRd;
+    const scalar Sn = 2*c.props->Ystar*sqrtRd;
+
+    // gammaN >= 0 because beta <= 0
+    const scalar gammaN = -2*sqrt(5.0/6.0)*c.props->beta*sqrt(Sn*c.mstar);
+
+    fElastic = kn*c.delta;
+
+    const scalar fn = fElastic - gammaN*c.vn;
+
+    return (limitForce_ && fn < 0) ? 0 : fn;
+}
+
+
+Foam::scalar Foam::normalContactModels::hertzParcel::contactTime
+(
+    const demPairProperties& props,
+    const scalar Rstar,
+    const scalar mass,
+    const scalar v
+) const
+{
+    // 2.9433*(15/16)^(2/5) = 2.8683 (theory 7.1)
+    return 2.8683*pow(sqr(mass)/(Rstar*sqr(props.Ystar)*v), 0.2);
+}
+
+
+// ************************************************************************* //

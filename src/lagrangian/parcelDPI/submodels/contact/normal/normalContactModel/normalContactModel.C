@@ -1,0 +1,54 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+\*---------------------------------------------------------------------------*/
+
+#include "normalContactModel.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(normalContactModel, 0);
+    defineRunTimeSelectionTable(normalContactModel, dictionary);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::normalContactModel::normalContactModel
+(
+    const dictionary& dict,
+    const word& type
+)
+:
+    coeffDict_(dict.subOrEmptyDict(type + "Coeffs"))
+{}
+
+
+// * * * * * * * * * * * * * * * * * Selector  * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::normalContactModel>
+Foam::normalContactModel::New(const dictionary& dict)
+{
+    const word modelType(dict.get<word>("normalModel"));
+
+    Info<< "Selecting normal contact model " << modelType << endl;
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "normalModel",
+            modelType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    return autoPtr<normalContactModel>(cstrIter()(dict));
+}
+
+
+// ************************************************************************* //

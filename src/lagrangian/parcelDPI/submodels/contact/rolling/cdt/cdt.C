@@ -1,0 +1,56 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+\*---------------------------------------------------------------------------*/
+
+#include "cdt.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace rollingContactModels
+{
+    defineTypeNameAndDebug(cdt, 0);
+    addToRunTimeSelectionTable(rollingContactModel, cdt, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::rollingContactModels::cdt::cdt(const dictionary& dict)
+:
+    rollingContactModel(dict, typeName),
+    scaleTorqueWithN_(coeffDict_.getOrDefault<bool>("scaleTorqueWithN", true))
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::vector Foam::rollingContactModels::cdt::torque
+(
+    const demContact& c,
+    const scalar fElastic
+) const
+{
+    const scalar magOmega = mag(c.omegaRel);
+
+    if (magOmega <= 0 || c.props->muR <= 0)
+    {
+        return Zero;
+    }
+
+    // The lever arm: R* for pairs, the contact-point distance for walls
+    const scalar arm = c.wall ? c.ci : c.Rstar;
+
+    vector M((c.props->muR*fElastic*arm/magOmega)*c.omegaRel);
+
+    // No resistance to twisting about the normal
+    M -= (M & c.n)*c.n;
+
+    return -M;
+}
+
+
+// ************************************************************************* //

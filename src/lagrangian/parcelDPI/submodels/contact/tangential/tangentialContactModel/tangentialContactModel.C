@@ -1,0 +1,54 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+\*---------------------------------------------------------------------------*/
+
+#include "tangentialContactModel.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(tangentialContactModel, 0);
+    defineRunTimeSelectionTable(tangentialContactModel, dictionary);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::tangentialContactModel::tangentialContactModel
+(
+    const dictionary& dict,
+    const word& type
+)
+:
+    coeffDict_(dict.subOrEmptyDict(type + "Coeffs"))
+{}
+
+
+// * * * * * * * * * * * * * * * * * Selector  * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::tangentialContactModel>
+Foam::tangentialContactModel::New(const dictionary& dict)
+{
+    const word modelType(dict.get<word>("tangentialModel"));
+
+    Info<< "Selecting tangential contact model " << modelType << endl;
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(modelType);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInLookup
+        (
+            dict,
+            "tangentialModel",
+            modelType,
+            *dictionaryConstructorTablePtr_
+        ) << exit(FatalIOError);
+    }
+
+    return autoPtr<tangentialContactModel>(cstrIter()(dict));
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,70 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+\*---------------------------------------------------------------------------*/
+
+#include "singleParticles.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace dpiInjectionModels
+{
+    defineTypeNameAndDebug(singleParticles, 0);
+    addToRunTimeSelectionTable(dpiInjectionModel, singleParticles, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dpiInjectionModels::singleParticles::singleParticles
+(
+    const word& name,
+    const dictionary& dict
+)
+:
+    dpiInjectionModel(name, dict),
+    particles_()
+{
+    const List<dictionary> entries(dict.get<List<dictionary>>("particles"));
+
+    if (entries.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "injectors/" << name << "/particles is empty"
+            << exit(FatalIOError);
+    }
+
+    particles_.setSize(entries.size());
+    forAll(entries, i)
+    {
+        const dictionary& e = entries[i];
+        injectedParticle& p = particles_[i];
+        p.position = e.get<point>("position");
+        p.U = e.lookupOrDefault<vector>("U", Zero);
+        p.omega = e.lookupOrDefault<vector>("omega", Zero);
+        p.type = e.get<word>("type");
+        p.d = e.lookupOrDefault<scalar>("d", -1);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::dpiInjectionModels::singleParticles::inject
+(
+    const scalar t0,
+    const scalar t1,
+    DynamicList<injectedParticle>& particles
+) const
+{
+    if (SOI_ >= t0 && SOI_ < t1)
+    {
+        particles.append(particles_);
+    }
+}
+
+
+// ************************************************************************* //
