@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Turn dpiFoam parcel traces into the guide's output.dat and figures.
 
 Usage: plotTrace.py --axis y --parcels 0 [1] --title "..." RUN [RUN ...]
@@ -45,8 +45,10 @@ def main():
     c = AXES[a.axis]
 
     fig1, ax1 = plt.subplots(figsize=(6, 4))
-    fig2, ax2 = plt.subplots(figsize=(6, 4))
-    for run in a.runs:
+    # forces differ by N: one panel per run, as the guide's figures
+    fig2, axes2 = plt.subplots(len(a.runs), 1, figsize=(6, 3*len(a.runs)),
+                               sharex=True, squeeze=False)
+    for r, run in enumerate(a.runs):
         tr = [read_trace(run, p) for p in a.parcels]
         n = min(len(t) for t in tr)
         tr = [t[:n] for t in tr]
@@ -73,16 +75,17 @@ def main():
             label = run if len(a.parcels) == 1 else "%s parcel %d" % (run, p)
             ax1.plot(t*1e6, tr[k][:, 1 + c]*1e6, label=label,
                      ls="-" if run == a.runs[0] else "--")
-            ax2.plot(t*1e6, tr[k][:, 7 + c], label=label,
-                     ls="-" if run == a.runs[0] else "--")
+            axes2[r, 0].plot(t*1e6, tr[k][:, 7 + c], label=label)
 
-    for ax, fig, what, unit in ((ax1, fig1, "position", a.axis + " [um]"),
-                                (ax2, fig2, "force", "f" + a.axis + " [N]")):
+    panels = [(ax1, "position", a.axis + " [um]")]
+    panels += [(ax, "force", "f" + a.axis + " [N]") for ax in axes2[:, 0]]
+    for ax, what, unit in panels:
         ax.set_xlabel("time [us]")
         ax.set_ylabel(unit)
         ax.set_title("%s: %s" % (a.title, what) if a.title else what)
         ax.grid(True, alpha=0.3)
         ax.legend()
+    for fig, what in ((fig1, "position"), (fig2, "force")):
         fig.tight_layout()
         fig.savefig("%s_%s.png" % (a.prefix, what), dpi=120)
         print("wrote %s_%s.png" % (a.prefix, what))

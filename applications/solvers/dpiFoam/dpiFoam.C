@@ -109,8 +109,8 @@ int main(int argc, char *argv[])
     }
     else
     {
-        rhoStill = stillScalar(mesh, "rho.none", dimensionedScalar(dimDensity, 1));
-        muStill = stillScalar(mesh, "mu.none", dimensionedScalar(dimDynamicViscosity, 0));
+        rhoStill = stillScalar(mesh, "rho.none", dimensionedScalar("rho", dimDensity, 1.0));
+        muStill = stillScalar(mesh, "mu.none", dimensionedScalar(dimDynamicViscosity, Zero));
         UStill.reset
         (
             new volVectorField
@@ -166,6 +166,8 @@ int main(int argc, char *argv[])
 
         runTime.printExecutionTime(Info);
     }
+
+    cloud.engine().writePerformance(Info);
 
     Info<< "End\n" << endl;
 

@@ -123,7 +123,7 @@ Foam::incompressibleGas::incompressibleGas
             IOobject::AUTO_WRITE
         ),
         mesh,
-        dimensionedScalar(dimless, 1)
+        dimensionedScalar("one", dimless, 1.0)
     ),
     alphacMin_(0),
     alphacf_("alphacf", fvc::interpolate(alphac_)),

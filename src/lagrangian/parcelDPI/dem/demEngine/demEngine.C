@@ -6,6 +6,8 @@
 #include "pairScaling.H"
 #include "demContact.H"
 #include "polyMesh.H"
+#include "IOmanip.H"
+#include "Map.H"
 #include <algorithm>
 #include <chrono>
 #include <vector>
@@ -119,7 +121,7 @@ void Foam::demEngine::checkTimeStep(const dictionary& dict) const
 
         if (dt > tH/10 && dt <= tH/3)
         {
-            WarningInFunction
+            WarningIn("Foam::demEngine::checkTimeStep")
                 << "DEM timeStep " << dt << " s resolves a contact of "
                 << name << " with only " << tH/dt << " steps (t_H = " << tH
                 << " s at " << v << " m/s); 10 or more are advised"
@@ -462,7 +464,10 @@ void Foam::demEngine::pairForces(const demState& s, const bool advance)
 
     demContact c;
     c.wall = false;
-    c.dt = advance ? timeStep_ : 0;
+    // A re-evaluation also takes the trial step xi + v_s dt (a new contact
+    // must not start in the sticking branch with its dashpot) but keeps it
+    // only when advancing
+    c.dt = timeStep_;
 
     forAll(pairs, k)
     {
@@ -580,7 +585,10 @@ void Foam::demEngine::wallForces
 
     demContact c;
     c.wall = true;
-    c.dt = advance ? timeStep_ : 0;
+    // A re-evaluation also takes the trial step xi + v_s dt (a new contact
+    // must not start in the sticking branch with its dashpot) but keeps it
+    // only when advancing
+    c.dt = timeStep_;
     c.Rstar = rp;
     c.mstar = s.m[p];
     c.cj = 0;
@@ -784,24 +792,67 @@ void Foam::demEngine::totalForces(demState& s) const
 }
 
 
-bool Foam::demEngine::cacheMatches(const demState& s) const
+bool Foam::demEngine::reuseCache(const demState& s)
 {
-    if (!cacheValid_ || s.size() != cacheX_.size())
+    const label n = s.size();
+
+    if (!cacheValid_ || n != cacheX_.size())
     {
         return false;
     }
 
+    // Rows in the same order (the usual case): compare directly
+    bool sameOrder = true;
     forAll(cacheX_, p)
     {
+        if (s.globalId[p] != cacheId_[p])
+        {
+            sameOrder = false;
+            break;
+        }
+    }
+
+    labelList from(identity(n));
+    if (!sameOrder)
+    {
+        // The cloud reordered its parcels: match them by globalId
+        Map<label> rowOf(2*n);
+        forAll(cacheId_, p)
+        {
+            rowOf.insert(cacheId_[p], p);
+        }
+        forAll(from, p)
+        {
+            const auto iter = rowOf.cfind(s.globalId[p]);
+            if (!iter.found())
+            {
+                return false;
+            }
+            from[p] = iter.val();
+        }
+    }
+
+    forAll(from, p)
+    {
+        const label q = from[p];
         if
         (
-            s.globalId[p] != cacheId_[p]
-         || s.x[p] != cacheX_[p]
-         || s.v[p] != cacheV_[p]
-         || s.omega[p] != cacheOmega_[p]
+            s.x[p] != cacheX_[q]
+         || s.v[p] != cacheV_[q]
+         || s.omega[p] != cacheOmega_[q]
         )
         {
             return false;
+        }
+    }
+
+    if (!sameOrder)
+    {
+        const List<vector> f(fContact_), t(tContact_);
+        forAll(from, p)
+        {
+            fContact_[p] = f[from[p]];
+            tContact_[p] = t[from[p]];
         }
     }
 
@@ -913,7 +964,7 @@ void Foam::demEngine::evolve
     // Forces of the starting state: those of the last sub-step if the cloud
     // has not touched the state since (so splitting a run into evolve calls
     // changes nothing), else a re-evaluation that leaves the history as is
-    if (cacheMatches(s))
+    if (reuseCache(s))
     {
         totalForces(s);
     }

@@ -40,6 +40,7 @@ void Foam::DPICloud<CloudType>::setModels()
     }
 
     engine_.reset(new demEngine(props.subDict("dem"), &this->mesh()));
+    engine_->setTime(this->mesh().time().value());
 
     injectors_.clear();
     if (props.found("injectors"))
@@ -69,6 +70,23 @@ void Foam::DPICloud<CloudType>::setModels()
                /time.timeName()
             )
         );
+    }
+
+    if (Pstream::master())
+    {
+        const Time& time = this->mesh().time();
+        const fileName dir
+        (
+            time.globalPath()/"postProcessing"/this->name()/"demDiagnostics"
+           /time.timeName()
+        );
+        mkDir(dir);
+        diagFile_.reset(new OFstream(dir/"demDiagnostics.dat"));
+        diagFile_().precision(10);
+        diagFile_()
+            << "# DEM diagnostics at the end of every fluid step" << nl
+            << "# time kineticEnergy[J] rotationalEnergy[J] nPairContacts"
+            << " nWallContacts maxOverlap/R* nParcels" << nl;
     }
 
     const label nPatches = this->mesh().boundaryMesh().size();
@@ -146,7 +164,7 @@ void Foam::DPICloud<CloudType>::storeCounters()
 template<class CloudType>
 void Foam::DPICloud<CloudType>::inject(const scalar t0, const scalar t1)
 {
-    DynamicList<injectedParticle> specs;
+    DynamicList<injectionSpec> specs;
     forAll(injectors_, i)
     {
         injectors_[i].inject(t0, t1, specs);
@@ -205,7 +223,7 @@ void Foam::DPICloud<CloudType>::inject(const scalar t0, const scalar t1)
 
     forAll(specs, i)
     {
-        const injectedParticle& s = specs[i];
+        const injectionSpec& s = specs[i];
 
         // Same on every processor: ids follow the list order
         const label gid = nextGlobalId_ + i;
@@ -288,6 +306,33 @@ void Foam::DPICloud<CloudType>::copyFromState()
 }
 
 
+template<class CloudType>
+void Foam::DPICloud<CloudType>::writeDiagnostics()
+{
+    const demDiagnostics& d = engine_->diagnostics();
+
+    const scalar ke = returnReduce(d.kineticEnergy, sumOp<scalar>());
+    const scalar re = returnReduce(d.rotationalEnergy, sumOp<scalar>());
+    const label nPair = returnReduce(d.nPairContacts, sumOp<label>());
+    const label nWall = returnReduce(d.nWallContacts, sumOp<label>());
+    const scalar maxOverlap = returnReduce(d.maxOverlapRatio, maxOp<scalar>());
+    const label nParcels = returnReduce(this->size(), sumOp<label>());
+
+    if (diagFile_.valid())
+    {
+        diagFile_()
+            << this->db().time().value() << ' ' << ke << ' ' << re
+            << ' ' << nPair << ' ' << nWall << ' ' << maxOverlap
+            << ' ' << nParcels << endl;
+    }
+
+    Info<< "    DEM: " << engine_->nSteps() << " sub-steps so far"
+        << ", contacts (pair, wall) = (" << nPair << ", " << nWall << ")"
+        << ", max overlap/R* = " << maxOverlap
+        << ", kinetic energy = " << ke << ", rotational = " << re << nl;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -309,6 +354,7 @@ Foam::DPICloud<CloudType>::DPICloud
     state_(),
     observer_(nullptr),
     trace_(nullptr),
+    diagFile_(nullptr),
     escapedParcels_(),
     escapedPrimaries_(),
     lostParcels_()
@@ -343,6 +389,7 @@ Foam::DPICloud<CloudType>::DPICloud
     state_(),
     observer_(nullptr),
     trace_(nullptr),
+    diagFile_(nullptr),
     escapedParcels_(c.escapedParcels_),
     escapedPrimaries_(c.escapedPrimaries_),
     lostParcels_(c.lostParcels_)
@@ -365,6 +412,7 @@ Foam::DPICloud<CloudType>::DPICloud
     state_(),
     observer_(nullptr),
     trace_(nullptr),
+    diagFile_(nullptr),
     escapedParcels_(),
     escapedPrimaries_(),
     lostParcels_()
@@ -466,13 +514,15 @@ void Foam::DPICloud<CloudType>::motion
     demObserver* obs = observer_;
     if (!obs && trace_.valid())
     {
-        trace_->beginStep(t1 - Dt, engine_->deltaT());
+        trace_->beginStep(t1 - Dt, engine_->timeStep());
         obs = trace_.get();
     }
 
     engine_->evolve(state_, Dt, this->g().value(), obs);
 
     copyFromState();
+
+    writeDiagnostics();
 
     // Relocate every parcel to its DEM position: one tracking pass, which
     // also hands parcels over to neighbouring processors
@@ -490,6 +540,10 @@ void Foam::DPICloud<CloudType>::info()
     const demMaterials& mat = engine_->materials();
     forAll(mat.names(), typei)
     {
+        if (!mat.isParticleType(typei))
+        {
+            continue;
+        }
         Info<< "    Primaries of type " << mat.names()[typei]
             << " = " << nPrimaries(typei) << nl;
     }
@@ -508,8 +562,6 @@ void Foam::DPICloud<CloudType>::info()
                 << ", lost through wall " << lost[patchi] << nl;
         }
     }
-
-    engine_->info(Info);
 }
 
 

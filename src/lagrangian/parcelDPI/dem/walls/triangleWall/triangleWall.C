@@ -321,48 +321,48 @@ void Foam::demWalls::triangleWall::findContacts
         work_.append(cand);
     }
 
-    // Distances of the same point seen from two triangles differ by
-    // round-off only; a triangle must be closer by more than this to
-    // take a contact away from a shared feature
+    // The same point seen from two triangles differs by round-off only
     const scalar tol = 1e-9*reach;
+    const scalar tol2 = sqr(tol);
+
+    kept_.clear();
 
     forAll(work_, ci)
     {
         const candidate& c = work_[ci];
         bool keep = true;
 
+        // An edge or vertex contact is a contact only if it is a local
+        // minimum of the distance: no triangle sharing that edge or vertex
+        // has its closest point elsewhere (which would be closer, the
+        // closest point of a triangle being unique)
         if (c.where != FACE)
         {
             forAll(work_, ui)
             {
-                if (ui == ci)
-                {
-                    continue;
-                }
                 const candidate& u = work_[ui];
                 const triFace& fu = tris_[u.tri];
 
-                const bool containsFeature =
-                    (fu.found(c.v0) && (c.v1 < 0 || fu.found(c.v1)));
-
-                if (!containsFeature)
-                {
-                    continue;
-                }
-
-                // Not a local minimum: that triangle has a closer point
-                if (u.distance < c.distance - tol)
+                if
+                (
+                    ui != ci
+                 && fu.found(c.v0) && (c.v1 < 0 || fu.found(c.v1))
+                 && magSqr(u.q - c.q) > tol2
+                )
                 {
                     keep = false;
                     break;
                 }
+            }
+        }
 
-                // Same feature already reported by an earlier triangle
-                if
-                (
-                    ui < ci && u.where == c.where
-                 && u.v0 == c.v0 && u.v1 == c.v1
-                )
+        // A point already reported (a shared edge or vertex, or a point on
+        // an edge that round-off puts inside both faces) counts once
+        if (keep)
+        {
+            for (const label ki : kept_)
+            {
+                if (magSqr(work_[ki].q - c.q) <= tol2)
                 {
                     keep = false;
                     break;
@@ -372,6 +372,8 @@ void Foam::demWalls::triangleWall::findContacts
 
         if (keep)
         {
+            kept_.append(ci);
+
             demWallContact wc;
             wc.key = c.tri;
             wc.distance = c.distance;

@@ -10,7 +10,8 @@
 #include "DPIParcel.H"
 #include "IOstreams.H"
 #include "IOField.H"
-#include "CompactIOField.H"
+#include "labelFieldIOField.H"
+#include "vectorFieldIOField.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 

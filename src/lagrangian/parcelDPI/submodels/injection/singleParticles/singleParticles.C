@@ -41,7 +41,7 @@ Foam::dpiInjectionModels::singleParticles::singleParticles
     forAll(entries, i)
     {
         const dictionary& e = entries[i];
-        injectedParticle& p = particles_[i];
+        injectionSpec& p = particles_[i];
         p.position = e.get<point>("position");
         p.U = e.lookupOrDefault<vector>("U", Zero);
         p.omega = e.lookupOrDefault<vector>("omega", Zero);
@@ -57,7 +57,7 @@ void Foam::dpiInjectionModels::singleParticles::inject
 (
     const scalar t0,
     const scalar t1,
-    DynamicList<injectedParticle>& particles
+    DynamicList<injectionSpec>& particles
 ) const
 {
     if (SOI_ >= t0 && SOI_ < t1)
