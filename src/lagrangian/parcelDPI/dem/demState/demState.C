@@ -19,6 +19,9 @@ void Foam::demState::clear()
     fExt.clear();
     f.clear();
     torque.clear();
+    fContact.clear();
+    tContact.clear();
+    contactForcesValid = false;
 }
 
 
@@ -45,6 +48,8 @@ Foam::label Foam::demState::append
     fExt.append(Zero);
     f.append(Zero);
     torque.append(Zero);
+    fContact.append(Zero);
+    tContact.append(Zero);
     return x.size() - 1;
 }
 

@@ -53,7 +53,7 @@ void Foam::DPICloud<CloudType>::setModels()
             injectors_.set
             (
                 i,
-                dpiInjectionModel::New(names[i], injDict.subDict(names[i]))
+                dpiInjectionModel::New(names[i], injDict.subDict(names[i]), &engine_->materials())
             );
         }
     }
@@ -162,7 +162,11 @@ void Foam::DPICloud<CloudType>::storeCounters()
 
 
 template<class CloudType>
-void Foam::DPICloud<CloudType>::inject(const scalar t0, const scalar t1)
+Foam::label Foam::DPICloud<CloudType>::inject
+(
+    const scalar t0,
+    const scalar t1
+)
 {
     DynamicList<injectionSpec> specs;
     forAll(injectors_, i)
@@ -172,7 +176,7 @@ void Foam::DPICloud<CloudType>::inject(const scalar t0, const scalar t1)
 
     if (returnReduce(specs.empty(), andOp<bool>()))
     {
-        return;
+        return 0;
     }
 
     const fvMesh& mesh = this->mesh();
@@ -255,17 +259,19 @@ void Foam::DPICloud<CloudType>::inject(const scalar t0, const scalar t1)
     nextGlobalId_ += specs.size();
 
     Info<< "    Injected " << specs.size() << " parcels" << endl;
+
+    return specs.size();
 }
 
 
 template<class CloudType>
-void Foam::DPICloud<CloudType>::copyToState()
+void Foam::DPICloud<CloudType>::copyToState(const bool contactForcesValid)
 {
     state_.clear();
 
     for (const parcelType& p : *this)
     {
-        state_.append
+        const label row = state_.append
         (
             p.xDEM(),
             p.U(),
@@ -276,8 +282,20 @@ void Foam::DPICloud<CloudType>::copyToState()
             p.typeId(),
             p.globalId()
         );
+        state_.fContact[row] = p.f();
+        state_.tContact[row] = p.torque();
+    }
+    state_.contactForcesValid = contactForcesValid;
 
-        engine_->setHistory(p.globalId(), p.contactKeys(), p.contactXi());
+    // The engine keeps the histories between steps; the parcels' copies
+    // are loaded once, at the first step (a restart)
+    if (!historyLoaded_)
+    {
+        for (const parcelType& p : *this)
+        {
+            engine_->setHistory(p.globalId(), p.contactKeys(), p.contactXi());
+        }
+        historyLoaded_ = true;
     }
 }
 
@@ -294,7 +312,8 @@ void Foam::DPICloud<CloudType>::copyFromState()
         p.xDEM() = state_.x[i];
         p.U() = state_.v[i];
         p.omega() = state_.omega[i];
-        p.f() = state_.f[i];
+        p.f() = state_.fContact[i];
+        p.torque() = state_.tContact[i];
 
         keys.clear();
         xi.clear();
@@ -352,6 +371,7 @@ Foam::DPICloud<CloudType>::DPICloud
     injectors_(),
     nextGlobalId_(0),
     state_(),
+    historyLoaded_(false),
     observer_(nullptr),
     trace_(nullptr),
     diagFile_(nullptr),
@@ -387,6 +407,7 @@ Foam::DPICloud<CloudType>::DPICloud
     injectors_(),
     nextGlobalId_(c.nextGlobalId_),
     state_(),
+    historyLoaded_(false),
     observer_(nullptr),
     trace_(nullptr),
     diagFile_(nullptr),
@@ -410,6 +431,7 @@ Foam::DPICloud<CloudType>::DPICloud
     injectors_(),
     nextGlobalId_(c.nextGlobalId_),
     state_(),
+    historyLoaded_(false),
     observer_(nullptr),
     trace_(nullptr),
     diagFile_(nullptr),
@@ -507,9 +529,9 @@ void Foam::DPICloud<CloudType>::motion
     const scalar Dt = time.deltaTValue();
     const scalar t1 = time.value();
 
-    inject(t1 - Dt, t1);
+    const label nInjected = inject(t1 - Dt, t1);
 
-    copyToState();
+    copyToState(nInjected == 0);
 
     demObserver* obs = observer_;
     if (!obs && trace_.valid())

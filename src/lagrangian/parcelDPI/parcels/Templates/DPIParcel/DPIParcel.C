@@ -16,6 +16,7 @@ Foam::DPIParcel<ParcelType>::DPIParcel(const DPIParcel<ParcelType>& p)
     omega_(p.omega_),
     xDEM_(p.xDEM_),
     f_(p.f_),
+    torque_(p.torque_),
     globalId_(p.globalId_),
     agglomerateId_(p.agglomerateId_),
     contactKeys_(p.contactKeys_),
@@ -34,6 +35,7 @@ Foam::DPIParcel<ParcelType>::DPIParcel
     omega_(p.omega_),
     xDEM_(p.xDEM_),
     f_(p.f_),
+    torque_(p.torque_),
     globalId_(p.globalId_),
     agglomerateId_(p.agglomerateId_),
     contactKeys_(p.contactKeys_),
@@ -148,6 +150,7 @@ void Foam::DPIParcel<ParcelType>::transformProperties(const tensor& T)
     omega_ = transform(T, omega_);
     xDEM_ = transform(T, xDEM_);
     f_ = transform(T, f_);
+    torque_ = transform(T, torque_);
     contactXi_ = transform(T, contactXi_);
 }
 

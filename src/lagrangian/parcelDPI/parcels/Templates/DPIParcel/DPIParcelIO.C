@@ -42,6 +42,7 @@ Foam::DPIParcel<ParcelType>::DPIParcel
     omega_(Zero),
     xDEM_(Zero),
     f_(Zero),
+    torque_(Zero),
     globalId_(-1),
     agglomerateId_(-1),
     contactKeys_(),
@@ -51,7 +52,8 @@ Foam::DPIParcel<ParcelType>::DPIParcel
     {
         if (is.format() == IOstream::ASCII)
         {
-            is  >> omega_ >> xDEM_ >> f_ >> globalId_ >> agglomerateId_;
+            is  >> omega_ >> xDEM_ >> f_ >> torque_
+                >> globalId_ >> agglomerateId_;
         }
         else if (!is.checkLabelSize<>() || !is.checkScalarSize<>())
         {
@@ -60,6 +62,7 @@ Foam::DPIParcel<ParcelType>::DPIParcel
             readRawScalar(is, omega_.data(), vector::nComponents);
             readRawScalar(is, xDEM_.data(), vector::nComponents);
             readRawScalar(is, f_.data(), vector::nComponents);
+            readRawScalar(is, torque_.data(), vector::nComponents);
             readRawLabel(is, &globalId_);
             readRawLabel(is, &agglomerateId_);
             is.endRawRead();
@@ -97,6 +100,13 @@ void Foam::DPIParcel<ParcelType>::readFields(CloudType& c)
     IOField<vector> f(c.fieldIOobject("f", IOobject::MUST_READ), valid);
     c.checkFieldIOobject(c, f);
 
+    IOField<vector> torque
+    (
+        c.fieldIOobject("torque", IOobject::MUST_READ),
+        valid
+    );
+    c.checkFieldIOobject(c, torque);
+
     IOField<label> globalId
     (
         c.fieldIOobject("globalId", IOobject::MUST_READ),
@@ -131,6 +141,7 @@ void Foam::DPIParcel<ParcelType>::readFields(CloudType& c)
         p.omega_ = omega[i];
         p.xDEM_ = xDEM[i];
         p.f_ = f[i];
+        p.torque_ = torque[i];
         p.globalId_ = globalId[i];
         p.agglomerateId_ = agglomerateId[i];
         p.contactKeys_ = contactKeys[i];
@@ -152,6 +163,7 @@ void Foam::DPIParcel<ParcelType>::writeFields(const CloudType& c)
     IOField<vector> omega(c.fieldIOobject("omega", IOobject::NO_READ), np);
     IOField<vector> xDEM(c.fieldIOobject("xDEM", IOobject::NO_READ), np);
     IOField<vector> f(c.fieldIOobject("f", IOobject::NO_READ), np);
+    IOField<vector> torque(c.fieldIOobject("torque", IOobject::NO_READ), np);
     IOField<label> globalId
     (
         c.fieldIOobject("globalId", IOobject::NO_READ),
@@ -179,6 +191,7 @@ void Foam::DPIParcel<ParcelType>::writeFields(const CloudType& c)
         omega[i] = p.omega_;
         xDEM[i] = p.xDEM_;
         f[i] = p.f_;
+        torque[i] = p.torque_;
         globalId[i] = p.globalId_;
         agglomerateId[i] = p.agglomerateId_;
         contactKeys[i] = p.contactKeys_;
@@ -189,6 +202,7 @@ void Foam::DPIParcel<ParcelType>::writeFields(const CloudType& c)
     omega.write(valid);
     xDEM.write(valid);
     f.write(valid);
+    torque.write(valid);
     globalId.write(valid);
     agglomerateId.write(valid);
     contactKeys.write(valid);
@@ -214,6 +228,7 @@ void Foam::DPIParcel<ParcelType>::writeProperties
     writeProp("omega", omega_);
     writeProp("xDEM", xDEM_);
     writeProp("f", f_);
+    writeProp("torque", torque_);
     writeProp("globalId", globalId_);
     writeProp("agglomerateId", agglomerateId_);
 
@@ -236,6 +251,7 @@ void Foam::DPIParcel<ParcelType>::readObjects
     const auto& omega = cloud::lookupIOField<vector>("omega", obr);
     const auto& xDEM = cloud::lookupIOField<vector>("xDEM", obr);
     const auto& f = cloud::lookupIOField<vector>("f", obr);
+    const auto& torque = cloud::lookupIOField<vector>("torque", obr);
     const auto& globalId = cloud::lookupIOField<label>("globalId", obr);
     const auto& agglomerateId =
         cloud::lookupIOField<label>("agglomerateId", obr);
@@ -246,6 +262,7 @@ void Foam::DPIParcel<ParcelType>::readObjects
         p.omega_ = omega[i];
         p.xDEM_ = xDEM[i];
         p.f_ = f[i];
+        p.torque_ = torque[i];
         p.globalId_ = globalId[i];
         p.agglomerateId_ = agglomerateId[i];
         ++i;
@@ -268,6 +285,7 @@ void Foam::DPIParcel<ParcelType>::writeObjects
     auto& omega = cloud::createIOField<vector>("omega", np, obr);
     auto& xDEM = cloud::createIOField<vector>("xDEM", np, obr);
     auto& f = cloud::createIOField<vector>("f", np, obr);
+    auto& torque = cloud::createIOField<vector>("torque", np, obr);
     auto& globalId = cloud::createIOField<label>("globalId", np, obr);
     auto& agglomerateId =
         cloud::createIOField<label>("agglomerateId", np, obr);
@@ -278,6 +296,7 @@ void Foam::DPIParcel<ParcelType>::writeObjects
         omega[i] = p.omega_;
         xDEM[i] = p.xDEM_;
         f[i] = p.f_;
+        torque[i] = p.torque_;
         globalId[i] = p.globalId_;
         agglomerateId[i] = p.agglomerateId_;
         ++i;
@@ -300,6 +319,7 @@ Foam::Ostream& Foam::operator<<
             << token::SPACE << p.omega_
             << token::SPACE << p.xDEM_
             << token::SPACE << p.f_
+            << token::SPACE << p.torque_
             << token::SPACE << p.globalId_
             << token::SPACE << p.agglomerateId_;
     }
