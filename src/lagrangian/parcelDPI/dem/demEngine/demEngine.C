@@ -495,6 +495,10 @@ void Foam::demEngine::pairForces(const demState& s, const bool advance)
         c.n = d/r;
         c.delta = rSum - r;
         c.props = &materials_.pair(s.typeId[i], s.typeId[j]);
+        c.typei = s.typeId[i];
+        c.typej = s.typeId[j];
+        c.ri = s.r[i];
+        c.rj = s.r[j];
         c.Rstar = s.r[i]*s.r[j]/rSum;
         c.mstar = s.m[i]*s.m[j]/(s.m[i] + s.m[j]);
 
@@ -591,6 +595,9 @@ void Foam::demEngine::wallForces
     c.dt = timeStep_;
     c.Rstar = rp;
     c.mstar = s.m[p];
+    c.typei = s.typeId[p];
+    c.ri = rp;
+    c.rj = 0;
     c.cj = 0;
     c.omegaRel = s.omega[p];
 
@@ -606,6 +613,7 @@ void Foam::demEngine::wallForces
             c.n = wc.n;
             c.delta = rp - wc.distance;
             c.props = &materials_.pair(s.typeId[p], wallMaterial_[w]);
+            c.typej = wallMaterial_[w];
 
             wallContribution contrib;
             contrib.partnerKey = wallPartnerKey(w, wc.key);
@@ -968,6 +976,13 @@ void Foam::demEngine::evolve
     {
         totalForces(s);
     }
+    else if (s.contactForcesValid)
+    {
+        // Given by the caller (restart, or parcels handed back unchanged)
+        fContact_ = s.fContact;
+        tContact_ = s.tContact;
+        totalForces(s);
+    }
     else
     {
         evaluate(s, false);
@@ -1019,6 +1034,10 @@ void Foam::demEngine::evolve
     }
 
     flushHistory();
+
+    s.fContact = fContact_;
+    s.tContact = tContact_;
+    s.contactForcesValid = true;
 
     cacheId_ = s.globalId;
     cacheX_ = s.x;
