@@ -72,6 +72,19 @@ void Foam::DPICloud<CloudType>::setModels()
         );
     }
 
+    {
+        const Time& time = this->mesh().time();
+        agglomerates_.reset
+        (
+            new agglomerateTracker
+            (
+                props.subOrEmptyDict("agglomerates"),
+                time.globalPath()/"postProcessing"/this->name()/"agglomerates"
+               /time.timeName()
+            )
+        );
+    }
+
     if (Pstream::master())
     {
         const Time& time = this->mesh().time();
@@ -312,6 +325,7 @@ void Foam::DPICloud<CloudType>::copyFromState()
         p.xDEM() = state_.x[i];
         p.U() = state_.v[i];
         p.omega() = state_.omega[i];
+        p.agglomerateId() = agglomerateIds_[i];
         p.f() = state_.fContact[i];
         p.torque() = state_.tContact[i];
 
@@ -375,6 +389,8 @@ Foam::DPICloud<CloudType>::DPICloud
     observer_(nullptr),
     trace_(nullptr),
     diagFile_(nullptr),
+    agglomerates_(nullptr),
+    agglomerateIds_(),
     escapedParcels_(),
     escapedPrimaries_(),
     lostParcels_()
@@ -411,6 +427,8 @@ Foam::DPICloud<CloudType>::DPICloud
     observer_(nullptr),
     trace_(nullptr),
     diagFile_(nullptr),
+    agglomerates_(nullptr),
+    agglomerateIds_(),
     escapedParcels_(c.escapedParcels_),
     escapedPrimaries_(c.escapedPrimaries_),
     lostParcels_(c.lostParcels_)
@@ -435,6 +453,8 @@ Foam::DPICloud<CloudType>::DPICloud
     observer_(nullptr),
     trace_(nullptr),
     diagFile_(nullptr),
+    agglomerates_(nullptr),
+    agglomerateIds_(),
     escapedParcels_(),
     escapedPrimaries_(),
     lostParcels_()
@@ -542,6 +562,9 @@ void Foam::DPICloud<CloudType>::motion
 
     engine_->evolve(state_, Dt, this->g().value(), obs);
 
+    agglomerates_->update(state_, engine_->materials(), agglomerateIds_);
+    agglomerates_->write(t1);
+
     copyFromState();
 
     writeDiagnostics();
@@ -569,6 +592,13 @@ void Foam::DPICloud<CloudType>::info()
         Info<< "    Primaries of type " << mat.names()[typei]
             << " = " << nPrimaries(typei) << nl;
     }
+
+    const agglomerateTracker::statistics& ag = agglomerates_->stats();
+    Info<< "    Agglomerates                    = " << ag.nAgglomerates
+        << nl
+        << "    API primaries: attached to carriers " << ag.attachedAPIPrimaries
+        << ", detached " << ag.apiPrimaries - ag.attachedAPIPrimaries
+        << " (singlets " << ag.singletAPIPrimaries << ")" << nl;
 
     const labelList escParcels(globalSum(escapedParcels_));
     const scalarList escPrim(globalSum(escapedPrimaries_));
