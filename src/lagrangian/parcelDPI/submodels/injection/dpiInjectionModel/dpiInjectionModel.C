@@ -32,7 +32,8 @@ Foam::dpiInjectionModel::dpiInjectionModel
 Foam::autoPtr<Foam::dpiInjectionModel> Foam::dpiInjectionModel::New
 (
     const word& name,
-    const dictionary& dict
+    const dictionary& dict,
+    const demMaterials* materials
 )
 {
     const word modelType(dict.get<word>("type"));
@@ -52,7 +53,7 @@ Foam::autoPtr<Foam::dpiInjectionModel> Foam::dpiInjectionModel::New
             << exit(FatalIOError);
     }
 
-    return autoPtr<dpiInjectionModel>(cstrIter()(name, dict));
+    return autoPtr<dpiInjectionModel>(cstrIter()(name, dict, materials));
 }
 
 

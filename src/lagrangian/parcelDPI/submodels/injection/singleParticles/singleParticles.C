@@ -22,7 +22,8 @@ namespace dpiInjectionModels
 Foam::dpiInjectionModels::singleParticles::singleParticles
 (
     const word& name,
-    const dictionary& dict
+    const dictionary& dict,
+    const demMaterials*
 )
 :
     dpiInjectionModel(name, dict),
