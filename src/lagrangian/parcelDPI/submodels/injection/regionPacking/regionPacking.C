@@ -1,0 +1,576 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+\*---------------------------------------------------------------------------*/
+
+#include "regionPacking.H"
+#include "demMaterials.H"
+#include "mathematicalConstants.H"
+#include "addToRunTimeSelectionTable.H"
+#include <algorithm>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace dpiInjectionModels
+{
+    defineTypeNameAndDebug(regionPacking, 0);
+    addToRunTimeSelectionTable(dpiInjectionModel, regionPacking, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Volume of a sphere of diameter d
+inline Foam::scalar sphereVolume(const Foam::scalar d)
+{
+    return Foam::constant::mathematical::pi/6*Foam::pow3(d);
+}
+
+//- Densest packing of equal spheres, pi/sqrt(18)
+const Foam::scalar maxFraction = 0.74048;
+
+
+//- Uniform hash grid of spheres for the overlap test
+class sphereGrid
+{
+    Foam::point origin_;
+    Foam::scalar h_;
+    std::unordered_map<std::int64_t, std::vector<Foam::label>> cells_;
+    std::vector<Foam::point> x_;
+    std::vector<Foam::scalar> r_;
+
+    std::int64_t key(const std::int64_t i, const std::int64_t j,
+                     const std::int64_t k) const
+    {
+        // Cells are within 2^20 of the origin in every direction
+        const std::int64_t o = 1 << 20;
+        return ((i + o) << 42) | ((j + o) << 21) | (k + o);
+    }
+
+    std::int64_t index(const Foam::scalar x) const
+    {
+        return static_cast<std::int64_t>(std::floor(x/h_));
+    }
+
+public:
+
+    sphereGrid(const Foam::point& origin, const Foam::scalar h)
+    :
+        origin_(origin),
+        h_(h)
+    {}
+
+    //- Insert a sphere of radius <= h/2
+    void insert(const Foam::point& x, const Foam::scalar r)
+    {
+        const Foam::vector d(x - origin_);
+        cells_[key(index(d.x()), index(d.y()), index(d.z()))]
+            .push_back(Foam::label(x_.size()));
+        x_.push_back(x);
+        r_.push_back(r);
+    }
+
+    //- Whether a sphere of radius <= h/2 at x overlaps one in the grid
+    bool overlaps(const Foam::point& x, const Foam::scalar r) const
+    {
+        const Foam::vector d(x - origin_);
+        const std::int64_t i0 = index(d.x()), j0 = index(d.y()),
+            k0 = index(d.z());
+        for (std::int64_t i = i0 - 1; i <= i0 + 1; ++i)
+        {
+            for (std::int64_t j = j0 - 1; j <= j0 + 1; ++j)
+            {
+                for (std::int64_t k = k0 - 1; k <= k0 + 1; ++k)
+                {
+                    const auto iter = cells_.find(key(i, j, k));
+                    if (iter == cells_.end())
+                    {
+                        continue;
+                    }
+                    for (const Foam::label q : iter->second)
+                    {
+                        if
+                        (
+                            Foam::magSqr(x - x_[q])
+                          < Foam::sqr(r + r_[q])
+                        )
+                        {
+                            return true;
+                        }
+                    }
+                }
+            }
+        }
+        return false;
+    }
+};
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::dpiInjectionModels::regionPacking::readFractions
+(
+    const demMaterials& mat
+)
+{
+    const dictionary& fd = dict_.subDict("fractions");
+    const wordList names(fd.toc());
+
+    if (names.empty())
+    {
+        FatalIOErrorInFunction(fd)
+            << "Dictionary " << fd.name() << " is empty: give a fraction per"
+            << " type, e.g. fractions { api 1; }; types: " << mat.names()
+            << exit(FatalIOError);
+    }
+
+    types_.setSize(names.size());
+    scalar sum = 0;
+    forAll(names, k)
+    {
+        const label ti = mat.typeIndex(names[k], fd, names[k]);
+        if (!mat.isParticleType(ti))
+        {
+            FatalIOErrorInFunction(fd)
+                << "Type '" << names[k] << "' in dictionary " << fd.name()
+                << " has no diameter: it is a wall material" << nl
+                << "Particle types: " << mat.names() << exit(FatalIOError);
+        }
+
+        packedType& t = types_[k];
+        t.name = names[k];
+        t.d = mat.diameter(ti);
+        t.rho = mat.density(ti);
+        t.fraction = fd.get<scalar>(names[k]);
+        if (!(t.fraction >= 0))
+        {
+            FatalIOErrorInFunction(fd)
+                << "Entry '" << names[k] << "' = " << t.fraction
+                << " in dictionary " << fd.name() << " must be >= 0"
+                << exit(FatalIOError);
+        }
+        sum += t.fraction;
+    }
+
+    if (mag(sum - 1) > 1e-6)
+    {
+        FatalIOErrorInFunction(fd)
+            << "The fractions in dictionary " << fd.name() << " sum to "
+            << sum << "; they must sum to 1 (basis "
+            << (massBasis_ ? "mass" : "number") << ")"
+            << exit(FatalIOError);
+    }
+
+    // Number fractions
+    scalar norm = 0;
+    for (packedType& t : types_)
+    {
+        t.x = massBasis_ ? t.fraction/(t.rho*sphereVolume(t.d)) : t.fraction;
+        norm += t.x;
+    }
+    for (packedType& t : types_)
+    {
+        t.x /= norm;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dpiInjectionModels::regionPacking::regionPacking
+(
+    const word& name,
+    const dictionary& dict,
+    const demMaterials* materials
+)
+:
+    dpiInjectionModel(name, dict),
+    region_(dict.subDict("region")),
+    types_(),
+    massBasis_(false),
+    volumeFraction_(-1),
+    nParticles_(-1),
+    seed_(dict.get<label>("seed")),
+    U_(dict.getOrDefault<vector>("U", Zero)),
+    omega_(dict.getOrDefault<vector>("omega", Zero)),
+    exclude_(),
+    avoidInjected_(dict.getOrDefault<bool>("avoidInjected", true)),
+    countObstacles_(dict.getOrDefault<bool>("countObstacles", true)),
+    maxAttempts_(dict.getOrDefault<label>("maxAttempts", 10000)),
+    typeDiameter_()
+{
+    if (!materials)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Injector " << name << " (regionPacking) needs the material "
+            << "table (dem/types) for the types' diameters and densities; "
+            << "construct it with the engine's materials"
+            << exit(FatalIOError);
+    }
+
+    const word basis(dict.get<word>("basis"));
+    if (basis == "mass")
+    {
+        massBasis_ = true;
+    }
+    else if (basis != "number")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown basis '" << basis << "' for entry 'basis' in "
+            << "dictionary " << dict.name() << nl
+            << "Valid choices: (number mass)" << exit(FatalIOError);
+    }
+
+    readFractions(*materials);
+
+    for (label i = 0; i < materials->size(); ++i)
+    {
+        if (materials->isParticleType(i))
+        {
+            typeDiameter_.insert(materials->names()[i], materials->diameter(i));
+        }
+    }
+
+    const bool hasFraction = dict.found("volumeFraction");
+    const bool hasNumber = dict.found("nParticles");
+    if (hasFraction == hasNumber)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Injector " << name << " needs exactly one of the entries "
+            << "'volumeFraction' and 'nParticles' in dictionary "
+            << dict.name() << exit(FatalIOError);
+    }
+    if (hasFraction)
+    {
+        volumeFraction_ = dict.get<scalar>("volumeFraction");
+        if (!(volumeFraction_ > 0) || volumeFraction_ > maxFraction)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'volumeFraction' = " << volumeFraction_
+                << " in dictionary " << dict.name() << " cannot be reached: "
+                << "it must be > 0 and at most pi/sqrt(18) = " << maxFraction
+                << " (the densest packing of equal spheres; random "
+                << "sequential packing reaches about 0.38)"
+                << exit(FatalIOError);
+        }
+    }
+    else
+    {
+        nParticles_ = dict.get<label>("nParticles");
+        if (nParticles_ < 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'nParticles' = " << nParticles_ << " in dictionary "
+                << dict.name() << " must be >= 0" << exit(FatalIOError);
+        }
+    }
+
+    if (maxAttempts_ < 1)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Entry 'maxAttempts' = " << maxAttempts_ << " in dictionary "
+            << dict.name() << " must be >= 1" << exit(FatalIOError);
+    }
+
+    if (dict.found("exclude"))
+    {
+        const List<dictionary> ex(dict.get<List<dictionary>>("exclude"));
+        exclude_.setSize(ex.size());
+        forAll(ex, k)
+        {
+            exclude_[k].centre = ex[k].get<point>("centre");
+            exclude_[k].radius = ex[k].get<scalar>("radius");
+            if (!(exclude_[k].radius > 0))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "Sphere " << k << " of entry 'exclude' in dictionary "
+                    << dict.name() << " has radius " << exclude_[k].radius
+                    << "; it must be > 0" << exit(FatalIOError);
+            }
+        }
+    }
+
+    for (const packedType& t : types_)
+    {
+        if (t.x > 0 && !region_.fits(0.5*t.d))
+        {
+            FatalIOErrorInFunction(dict)
+                << "A particle of type " << t.name << " (d = " << t.d
+                << " m) does not fit in the " << region_.shapeName()
+                << " of dictionary " << dict.subDict("region").name()
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::labelList Foam::dpiInjectionModels::regionPacking::counts
+(
+    const scalar obstacleVolume
+) const
+{
+    label N = nParticles_;
+
+    if (N < 0)
+    {
+        const scalar target =
+            volumeFraction_*region_.volume()
+          - (countObstacles_ ? obstacleVolume : 0);
+
+        if (!(target > 0))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Injector " << name_ << ": the obstacles in the "
+                << region_.shapeName() << " already occupy "
+                << obstacleVolume/region_.volume() << " of it, at least the"
+                << " target volumeFraction " << volumeFraction_
+                << " in dictionary " << dict_.name() << "; nothing to pack"
+                << " (raise volumeFraction or set countObstacles false)"
+                << exit(FatalIOError);
+        }
+
+        scalar vMean = 0;
+        for (const packedType& t : types_)
+        {
+            vMean += t.x*sphereVolume(t.d);
+        }
+        N = label(std::round(target/vMean));
+    }
+
+    // Largest remainder: counts sum to N, each within 1 of N x_k
+    labelList n(types_.size());
+    scalarList rem(types_.size());
+    label assigned = 0;
+    forAll(types_, k)
+    {
+        const scalar exact = N*types_[k].x;
+        n[k] = label(std::floor(exact));
+        rem[k] = exact - n[k];
+        assigned += n[k];
+    }
+    labelList order(identity(types_.size()));
+    std::stable_sort
+    (
+        order.begin(),
+        order.end(),
+        [&](const label a, const label b) { return rem[a] > rem[b]; }
+    );
+    for (label k = 0; assigned < N; ++k)
+    {
+        ++n[order[k % order.size()]];
+        ++assigned;
+    }
+
+    return n;
+}
+
+
+void Foam::dpiInjectionModels::regionPacking::pack
+(
+    const UList<injectionSpec>& previous,
+    DynamicList<injectionSpec>& particles
+) const
+{
+    Random rnd(seed_);
+
+    // Largest packed diameter: the grid cell
+    scalar dMax = 0;
+    for (const packedType& t : types_)
+    {
+        dMax = max(dMax, t.d);
+    }
+
+    // Obstacles near the region: small ones into the grid, larger ones in
+    // a list
+    const boundBox near(region_.bounds());
+    const point origin(near.min() - vector::uniform(dMax));
+    sphereGrid grid(origin, dMax);
+    List<sphere> large;
+    scalar obstacleVolume = 0;
+    label nObstacles = 0;
+
+    auto addObstacle = [&](const point& c, const scalar r)
+    {
+        for (direction cmpt = 0; cmpt < 3; ++cmpt)
+        {
+            if
+            (
+                c[cmpt] < near.min()[cmpt] - r - dMax
+             || c[cmpt] > near.max()[cmpt] + r + dMax
+            )
+            {
+                return;
+            }
+        }
+        ++nObstacles;
+        if (region_.contains(c, 0))
+        {
+            obstacleVolume += sphereVolume(2*r);
+        }
+        if (r <= 0.5*dMax)
+        {
+            grid.insert(c, r);
+        }
+        else
+        {
+            large.append(sphere{c, r});
+        }
+    };
+
+    for (const sphere& s : exclude_)
+    {
+        addObstacle(s.centre, s.radius);
+    }
+    if (avoidInjected_)
+    {
+        for (const injectionSpec& s : previous)
+        {
+            const scalar d = s.d > 0 ? s.d : typeDiameter_.lookup(s.type, -1);
+            if (d > 0)
+            {
+                addObstacle(s.position, 0.5*d);
+            }
+        }
+    }
+
+    const labelList n(counts(obstacleVolume));
+
+    // Larger types first (a large particle finds no room among small ones)
+    labelList order(identity(types_.size()));
+    std::stable_sort
+    (
+        order.begin(),
+        order.end(),
+        [&](const label a, const label b) { return types_[a].d > types_[b].d; }
+    );
+
+    label nTotal = 0;
+    for (const label c : n)
+    {
+        nTotal += c;
+    }
+
+    const scalar V = region_.volume();
+    scalar placedVolume = 0;
+    label nPlaced = 0;
+    scalar nDraws = 0;
+
+    for (const label k : order)
+    {
+        const packedType& t = types_[k];
+        const scalar r = 0.5*t.d;
+
+        for (label m = 0; m < n[k]; ++m)
+        {
+            bool placed = false;
+            for (label attempt = 0; attempt < maxAttempts_; ++attempt)
+            {
+                ++nDraws;
+                point p;
+                if (!region_.sample(rnd, r, p))
+                {
+                    continue;
+                }
+                if (grid.overlaps(p, r))
+                {
+                    continue;
+                }
+                bool hit = false;
+                for (const sphere& s : large)
+                {
+                    if (magSqr(p - s.centre) < sqr(r + s.radius))
+                    {
+                        hit = true;
+                        break;
+                    }
+                }
+                if (hit)
+                {
+                    continue;
+                }
+
+                grid.insert(p, r);
+                injectionSpec spec;
+                spec.position = p;
+                spec.U = U_;
+                spec.omega = omega_;
+                spec.type = t.name;
+                spec.d = -1;
+                particles.append(spec);
+                placed = true;
+                break;
+            }
+
+            if (!placed)
+            {
+                FatalIOErrorInFunction(dict_)
+                    << "Injector " << name_ << " (regionPacking, seed "
+                    << seed_ << "): could not place particle " << nPlaced + 1
+                    << " of " << nTotal << " (type " << t.name << ", d "
+                    << t.d << " m) without overlap after " << maxAttempts_
+                    << " attempts (maxAttempts)." << nl
+                    << "    Reached solid fraction "
+                    << (placedVolume + (countObstacles_ ? obstacleVolume : 0))/V
+                    << " of the " << region_.shapeName() << " (target "
+                    << (volumeFraction_ > 0 ? "volumeFraction " : "nParticles ")
+                    << (volumeFraction_ > 0 ? volumeFraction_ : scalar(nTotal))
+                    << ", obstacles " << obstacleVolume/V << ")." << nl
+                    << "    Random sequential packing of equal spheres "
+                    << "saturates near 0.38: lower volumeFraction or "
+                    << "nParticles, enlarge the region, or raise maxAttempts"
+                    << " in dictionary " << dict_.name()
+                    << exit(FatalIOError);
+            }
+
+            placedVolume += sphereVolume(t.d);
+            ++nPlaced;
+        }
+    }
+
+    Info<< "    regionPacking " << name_ << ": " << nPlaced << " particles (";
+    forAll(types_, k)
+    {
+        Info<< (k ? " " : "") << types_[k].name << " " << n[k];
+    }
+    Info<< ") in " << region_.shapeName() << " of volume " << V
+        << " m^3, solid fraction "
+        << (placedVolume + (countObstacles_ ? obstacleVolume : 0))/V;
+    if (volumeFraction_ > 0)
+    {
+        Info<< " (target " << volumeFraction_ << ")";
+    }
+    Info<< ", " << nObstacles << " obstacles (" << obstacleVolume/V
+        << " of the region), seed " << seed_ << ", " << nDraws << " draws"
+        << endl;
+}
+
+
+void Foam::dpiInjectionModels::regionPacking::inject
+(
+    const scalar t0,
+    const scalar t1,
+    DynamicList<injectionSpec>& particles
+) const
+{
+    if (SOI_ >= t0 && SOI_ < t1)
+    {
+        // The earlier injectors' particles of this step are obstacles
+        const List<injectionSpec> previous(particles);
+        pack(previous, particles);
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,673 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: unit tests of the regionPacking injection model
+-------------------------------------------------------------------------------
+Description
+    Region packing in a sphere, box, cylinder and cone: achieved solid
+    fraction, no overlaps, every particle wholly inside (checked with
+    geometry written independently of packingRegion), number and mass
+    fractions, reproducibility with a seed, packing around a carrier
+    (Case 5, by avoidInjected and by exclude), and a clear error within
+    bounded time for a fraction that cannot be reached; bad input.
+
+\*---------------------------------------------------------------------------*/
+
+#include <gtest/gtest.h>
+#include "regionPacking.H"
+#include "demMaterials.H"
+#include "IStringStream.H"
+#include "mathematicalConstants.H"
+#include <chrono>
+#include <functional>
+#include <vector>
+#include <sstream>
+#include <string>
+
+using namespace Foam;
+
+namespace
+{
+
+dictionary toDict(const std::string& text)
+{
+    IStringStream is(text);
+    return dictionary(is);
+}
+
+// carrier 70 um, api 5 um (N 10), mid 10 um of another density, a wall
+const std::string materialsText
+(
+    "types {"
+    "  carrier { diameter 70e-6; density 1520; youngsModulus 5e8;"
+    "            poissonsRatio 0.35; }"
+    "  api { diameter 5e-6; density 1520; youngsModulus 5e8;"
+    "        poissonsRatio 0.35; N 10; }"
+    "  mid { diameter 10e-6; density 3000; youngsModulus 5e8;"
+    "        poissonsRatio 0.35; }"
+    "  wall { youngsModulus 5e8; poissonsRatio 0.35; }"
+    "}"
+    "pairs { default { restitution 0.85; friction 0.45; } }"
+);
+
+// A point as dictionary text, to 17 digits
+std::string str(const point& p)
+{
+    std::ostringstream os;
+    os.precision(17);
+    os << '(' << p.x() << ' ' << p.y() << ' ' << p.z() << ')';
+    return os.str();
+}
+
+const demMaterials& materials()
+{
+    static const demMaterials mat(toDict(materialsText));
+    return mat;
+}
+
+scalar diameterOf(const word& type)
+{
+    const demMaterials& mat = materials();
+    return mat.diameter(mat.names().find(type));
+}
+
+scalar volumeOf(const word& type)
+{
+    return constant::mathematical::pi/6*pow3(diameterOf(type));
+}
+
+// Pack with the model, starting from a list that may hold earlier
+// injectors' particles; returns only the packed particles
+List<injectionSpec> packed
+(
+    const std::string& text,
+    const List<injectionSpec>& before = List<injectionSpec>()
+)
+{
+    autoPtr<dpiInjectionModel> m =
+        dpiInjectionModel::New("bed", toDict(text), &materials());
+    DynamicList<injectionSpec> out;
+    out.append(before);
+    m->inject(0, 1, out);
+    return List<injectionSpec>
+    (
+        SubList<injectionSpec>(out, out.size() - before.size(), before.size())
+    );
+}
+
+// Smallest gap between two packed particles, relative to their radius sum
+// (negative: an overlap); O(n^2), fine for a few thousand
+scalar minGapRatio(const UList<injectionSpec>& ps)
+{
+    scalarList r(ps.size());
+    forAll(ps, a)
+    {
+        r[a] = 0.5*diameterOf(ps[a].type);
+    }
+    scalar worst = GREAT;
+    forAll(ps, a)
+    {
+        for (label b = a + 1; b < ps.size(); ++b)
+        {
+            const scalar d2 = magSqr(ps[a].position - ps[b].position);
+            if (d2 < sqr((1 + worst)*(r[a] + r[b])))
+            {
+                worst = Foam::sqrt(d2)/(r[a] + r[b]) - 1;
+            }
+        }
+    }
+    return worst;
+}
+
+scalar solidVolume(const UList<injectionSpec>& ps)
+{
+    scalar v = 0;
+    for (const injectionSpec& p : ps)
+    {
+        v += volumeOf(p.type);
+    }
+    return v;
+}
+
+label countOf(const UList<injectionSpec>& ps, const word& type)
+{
+    label n = 0;
+    for (const injectionSpec& p : ps)
+    {
+        n += (p.type == type);
+    }
+    return n;
+}
+
+// Independent containment tests (sphere of radius r wholly inside); a
+// relative slack of 1e-12 of the region size for round-off
+bool inSphere(const point& p, const scalar r, const point& c, const scalar R)
+{
+    return mag(p - c) + r <= R*(1 + 1e-12);
+}
+
+bool inBox(const point& p, const scalar r, const point& lo, const point& hi)
+{
+    const scalar eps = 1e-12*mag(hi - lo);
+    for (direction i = 0; i < 3; ++i)
+    {
+        if (p[i] - r < lo[i] - eps || p[i] + r > hi[i] + eps)
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+// Truncated cone (a cylinder when R1 = R2) from a to b: the sphere is
+// inside when it clears both end planes and, at its axial station, the
+// lateral surface by r measured normal to the generator
+bool inCone
+(
+    const point& p, const scalar r,
+    const point& a, const scalar R1, const point& b, const scalar R2
+)
+{
+    const scalar L = mag(b - a);
+    const vector e((b - a)/L);
+    const scalar t = (p - a) & e;
+    const scalar rho = mag((p - a) - t*e);
+    const scalar eps = 1e-12*L;
+    if (t - r < -eps || t + r > L + eps)
+    {
+        return false;
+    }
+    const scalar Rt = R1 + (R2 - R1)*t/L;
+    const scalar cosAlpha = L/Foam::sqrt(sqr(L) + sqr(R2 - R1));
+    return (Rt - rho)*cosAlpha >= r - eps;
+}
+
+struct shapeCase
+{
+    std::string name;
+    std::string region;
+    scalar volume;
+    std::function<bool(const point&, scalar)> inside;
+};
+
+std::vector<shapeCase> shapes()
+{
+    using constant::mathematical::pi;
+    const point a(1e-5, -2e-5, 3e-5);
+    const point b(a + vector(40e-6, 60e-6, 90e-6));  // skewed axis
+    const scalar L = mag(b - a);
+
+    std::ostringstream cyl, cone;
+    cyl.precision(17);
+    cone.precision(17);
+    cyl << "region { shape cylinder; point1 " << str(a) << "; point2 " << str(b)
+        << "; radius 50e-6; }";
+    cone << "region { shape cone; point1 " << str(a) << "; radius1 60e-6; point2 "
+         << str(b) << "; radius2 20e-6; }";
+
+    return
+    {
+        {
+            "sphere",
+            "region { shape sphere; centre (1e-4 2e-4 -3e-4); radius 60e-6; }",
+            4.0/3.0*pi*pow3(60e-6),
+            [](const point& p, const scalar r)
+            { return inSphere(p, r, point(1e-4, 2e-4, -3e-4), 60e-6); }
+        },
+        {
+            "box",
+            "region { shape box; min (0 0 0); max (100e-6 120e-6 80e-6); }",
+            100e-6*120e-6*80e-6,
+            [](const point& p, const scalar r)
+            {
+                return inBox(p, r, point::zero, point(100e-6, 120e-6, 80e-6));
+            }
+        },
+        {
+            "cylinder",
+            cyl.str(),
+            pi*sqr(50e-6)*L,
+            [a, b](const point& p, const scalar r)
+            { return inCone(p, r, a, 50e-6, b, 50e-6); }
+        },
+        {
+            "cone",
+            cone.str(),
+            pi*L/3*(sqr(60e-6) + 60e-6*20e-6 + sqr(20e-6)),
+            [a, b](const point& p, const scalar r)
+            { return inCone(p, r, a, 60e-6, b, 20e-6); }
+        }
+    };
+}
+
+std::string bed
+(
+    const std::string& region,
+    const std::string& amount,
+    const std::string& fractions,
+    const std::string& extra = "",
+    const label seed = 11103
+)
+{
+    return "type regionPacking; seed " + std::to_string(seed) + "; "
+        + region + " " + amount + " " + fractions + " U (0 0 -1); " + extra;
+}
+
+} // End anonymous namespace
+
+
+// Every shape at 0.3 with 70 % api and 30 % mid by number (~1000-2000
+// particles): the achieved fraction is within 1.5 (v_api + v_mid)/V of the
+// target (rounding of the total to an integer, vMean/2, plus of each count
+// by largest remainder, < v_k each; ~6e-4 to 1e-3 here); no two particles
+// overlap (gap ratio >= 0, the model's own criterion recomputed); every
+// particle wholly inside by the independent geometry above; the counts are
+// within 1 of N x_k; the velocity and type are as given.
+TEST(regionPacking, shapesFractionNoOverlapInside)
+{
+    FatalIOError.throwExceptions();
+
+    for (const shapeCase& sc : shapes())
+    {
+        const List<injectionSpec> ps = packed
+        (
+            bed
+            (
+                sc.region, "volumeFraction 0.3;",
+                "basis number; fractions { api 0.7; mid 0.3; }"
+            )
+        );
+
+        const scalar phi = solidVolume(ps)/sc.volume;
+        const scalar tol = 1.5*(volumeOf("api") + volumeOf("mid"))/sc.volume;
+        const label N = ps.size();
+
+        std::cout << "  " << sc.name << ": " << N << " particles, fraction "
+                  << phi << " (tolerance " << tol << "), min gap/(r_i + r_j) "
+                  << minGapRatio(ps) << std::endl;
+
+        EXPECT_NEAR(phi, 0.3, tol) << sc.name;
+        EXPECT_GE(minGapRatio(ps), 0) << sc.name;
+        EXPECT_LE(mag(countOf(ps, "api") - 0.7*N), 1) << sc.name;
+        EXPECT_LE(mag(countOf(ps, "mid") - 0.3*N), 1) << sc.name;
+
+        label outside = 0;
+        for (const injectionSpec& p : ps)
+        {
+            outside += !sc.inside(p.position, 0.5*diameterOf(p.type));
+            EXPECT_EQ(p.U, vector(0, 0, -1));
+            EXPECT_LT(p.d, 0) << "the type's diameter";
+        }
+        EXPECT_EQ(outside, 0) << sc.name;
+    }
+}
+
+
+// Mass basis, carriers and API of equal density at 0.2 in a 600 um box:
+// the counts are N x_k rounded (x_k ~ w_k/v_k, computed here directly), so
+// within 1 of N x_k, and the API mass fraction is within
+// 1.5 (m_c + m_a)/M of 0.005 (one particle of each type, as above).
+TEST(regionPacking, massFractions)
+{
+    FatalIOError.throwExceptions();
+
+    const List<injectionSpec> ps = packed
+    (
+        bed
+        (
+            "region { shape box; min (0 0 0); max (600e-6 600e-6 600e-6); }",
+            "volumeFraction 0.2;",
+            "basis mass; fractions { carrier 0.995; api 0.005; }"
+        )
+    );
+
+    const scalar vc = volumeOf("carrier"), va = volumeOf("api");
+    const label nc = countOf(ps, "carrier"), na = countOf(ps, "api");
+    const label N = nc + na;
+    ASSERT_EQ(N, ps.size());
+
+    const scalar xa = (0.005/va)/(0.005/va + 0.995/vc);
+    const scalar massApi = na*va, massTotal = na*va + nc*vc;   // rho equal
+
+    std::cout << "  mass basis: " << nc << " carriers, " << na << " api, api "
+              << "mass fraction " << massApi/massTotal << ", fraction "
+              << massTotal/pow3(600e-6) << ", min gap ratio "
+              << minGapRatio(ps) << std::endl;
+
+    EXPECT_LE(mag(na - xa*N), 1);
+    EXPECT_NEAR(massApi/massTotal, 0.005, 1.5*(vc + va)/massTotal);
+    EXPECT_NEAR(massTotal/pow3(600e-6), 0.2, 1.5*(vc + va)/pow3(600e-6));
+    EXPECT_GE(minGapRatio(ps), 0);
+
+    // Carriers are placed first (larger types first)
+    EXPECT_EQ(ps[0].type, "carrier");
+    EXPECT_EQ(ps[nc].type, "api");
+}
+
+
+// The inhaler's powder bed (theory 8.7, guide deck): a cone on the z axis
+// at x = 3.9 cm, radius 0.08 cm at z = -0.34 cm to 0.01 cm at z = -0.235 cm,
+// 30 % solids split 99.5357 % carrier / 0.4643 % API by mass (N = 10 on the
+// API type does not enter: primary geometry). Expected counts, from the
+// cone volume 8.03e-10 m^3: 1334 carriers and 17083 API (the guide's
+// sample run has 17,100 API parcels). Achieved fraction within
+// 1.5 (v_c + v_a)/V, no overlaps, all inside. Measured 0.15 s.
+TEST(regionPacking, inhalerPowderBed)
+{
+    FatalIOError.throwExceptions();
+
+    const point a(0.039, 0, -0.0034), b(0.039, 0, -0.00235);
+    const List<injectionSpec> ps = packed
+    (
+        bed
+        (
+            "region { shape cone; point1 " + str(a) + "; radius1 8e-4;"
+            " point2 " + str(b) + "; radius2 1e-4; }",
+            "volumeFraction 0.3;",
+            "basis mass; fractions { carrier 0.995357; api 0.004643; }",
+            "",
+            86
+        )
+    );
+
+    using constant::mathematical::pi;
+    const scalar V = pi*0.00105/3*(sqr(8e-4) + 8e-4*1e-4 + sqr(1e-4));
+    const label nc = countOf(ps, "carrier"), na = countOf(ps, "api");
+
+    std::cout << "  inhaler bed: " << nc << " carriers, " << na << " api, "
+              << "fraction " << solidVolume(ps)/V << std::endl;
+
+    EXPECT_NEAR(nc, 1334, 1);
+    EXPECT_NEAR(na, 17083, 1);
+    EXPECT_NEAR
+    (
+        solidVolume(ps)/V, 0.3, 1.5*(volumeOf("carrier") + volumeOf("api"))/V
+    );
+    EXPECT_GE(minGapRatio(ps), 0);
+
+    label outside = 0;
+    for (const injectionSpec& p : ps)
+    {
+        outside +=
+            !inCone(p.position, 0.5*diameterOf(p.type), a, 8e-4, b, 1e-4);
+    }
+    EXPECT_EQ(outside, 0);
+}
+
+
+// Same seed: the identical list (bit for bit, which is what makes every
+// processor build the same one); another seed: a different list.
+TEST(regionPacking, reproducibleWithSeed)
+{
+    FatalIOError.throwExceptions();
+
+    const std::string region =
+        "region { shape sphere; centre (0 0 0); radius 40e-6; }";
+    const std::string fr = "basis number; fractions { api 0.5; mid 0.5; }";
+
+    const List<injectionSpec> a = packed(bed(region, "volumeFraction 0.25;", fr));
+    const List<injectionSpec> b = packed(bed(region, "volumeFraction 0.25;", fr));
+    const List<injectionSpec> c =
+        packed(bed(region, "volumeFraction 0.25;", fr, "", 4711));
+
+    ASSERT_EQ(a.size(), b.size());
+    ASSERT_EQ(a.size(), c.size());
+    ASSERT_GT(a.size(), 100);
+
+    label nSame = 0, nDiff = 0;
+    forAll(a, k)
+    {
+        nSame += (a[k].position == b[k].position && a[k].type == b[k].type);
+        nDiff += (a[k].position != c[k].position);
+    }
+    EXPECT_EQ(nSame, a.size());
+    EXPECT_EQ(nDiff, a.size());
+}
+
+
+// nParticles instead of a fraction; SOI: injected once, in the interval
+// that holds SOI.
+TEST(regionPacking, nParticlesAndSOI)
+{
+    FatalIOError.throwExceptions();
+
+    autoPtr<dpiInjectionModel> m = dpiInjectionModel::New
+    (
+        "bed",
+        toDict
+        (
+            bed
+            (
+                "region { shape box; min (0 0 0); max (50e-6 50e-6 50e-6); }",
+                "nParticles 66; SOI 2e-5;",
+                "basis number; fractions { api 1; }"
+            )
+        ),
+        &materials()
+    );
+    DynamicList<injectionSpec> out;
+    m->inject(0, 2e-5, out);
+    EXPECT_EQ(out.size(), 0);
+    m->inject(2e-5, 3e-5, out);
+    EXPECT_EQ(out.size(), 66);
+    m->inject(3e-5, 4e-5, out);
+    EXPECT_EQ(out.size(), 66);
+}
+
+
+// Case 5: a carrier (singleParticles, listed first) at the centre of the
+// 42 um sphere, API packed around it to a total solid fraction of 0.6
+// (the carrier counts, countObstacles true): N = round((0.6 V - V_c)/v_a)
+// = 101. No API overlaps the carrier or another API, all inside; the
+// explicit `exclude` sphere gives the identical list; without the carrier
+// counted the target (2844 API in the 2 um shell) is unreachable.
+TEST(regionPacking, case5AroundCarrier)
+{
+    FatalIOError.throwExceptions();
+    using constant::mathematical::pi;
+
+    const point c(5e-4, 5e-4, 2e-4);
+    const scalar R = 42e-6, rc = 35e-6, ra = 2.5e-6;
+
+    std::ostringstream region;
+    region.precision(17);
+    region << "region { shape sphere; centre " << str(c) << "; radius " << R << "; }";
+    const std::string fr = "basis number; fractions { api 1; }";
+
+    injectionSpec carrier;
+    carrier.position = c;
+    carrier.U = Zero;
+    carrier.omega = Zero;
+    carrier.type = "carrier";
+    carrier.d = -1;
+
+    const List<injectionSpec> ps = packed
+    (
+        bed(region.str(), "volumeFraction 0.6;", fr),
+        List<injectionSpec>(1, carrier)
+    );
+
+    const scalar V = 4.0/3.0*pi*pow3(R);
+    const label expected =
+        label(std::round((0.6*V - 4.0/3.0*pi*pow3(rc))/volumeOf("api")));
+    EXPECT_EQ(expected, 101);
+    EXPECT_EQ(ps.size(), expected);
+
+    scalar minCarrierGap = GREAT;
+    for (const injectionSpec& p : ps)
+    {
+        EXPECT_TRUE(inSphere(p.position, ra, c, R));
+        minCarrierGap = min(minCarrierGap, mag(p.position - c) - rc - ra);
+    }
+    std::cout << "  Case 5: " << ps.size() << " API around the carrier, "
+              << "smallest gap to it " << minCarrierGap << " m, total "
+              << "fraction " << (solidVolume(ps) + 4.0/3.0*pi*pow3(rc))/V
+              << std::endl;
+    EXPECT_GE(minCarrierGap, 0);
+    EXPECT_GE(minGapRatio(ps), 0);
+    EXPECT_NEAR
+    (
+        (solidVolume(ps) + 4.0/3.0*pi*pow3(rc))/V, 0.6, volumeOf("api")/V
+    );
+
+    // The same obstacle given as an exclude sphere
+    std::ostringstream ex;
+    ex.precision(17);
+    ex << "avoidInjected false; exclude ( { centre " << str(c) << "; radius " << rc
+       << "; } );";
+    const List<injectionSpec> ps2 =
+        packed(bed(region.str(), "volumeFraction 0.6;", fr, ex.str()));
+    ASSERT_EQ(ps2.size(), ps.size());
+    forAll(ps, k)
+    {
+        EXPECT_EQ(ps2[k].position, ps[k].position);
+    }
+
+    // Not counting the carrier: 0.6 of the sphere in API cannot fit
+    EXPECT_THROW
+    (
+        packed
+        (
+            bed(region.str(), "volumeFraction 0.6;", fr, "countObstacles false;"),
+            List<injectionSpec>(1, carrier)
+        ),
+        Foam::error
+    );
+}
+
+
+// A fraction random sequential packing cannot reach (0.5 of equal spheres,
+// saturation ~0.38): a FatalIOError naming maxAttempts and the fraction
+// reached, after at most N x maxAttempts draws. Measured well under a
+// second; 30 s is a bound that only a hang (or a quadratic search) breaks.
+// Above pi/sqrt(18) the error comes at construction.
+TEST(regionPacking, unreachableFractionFailsInBoundedTime)
+{
+    FatalIOError.throwExceptions();
+
+    const auto t0 = std::chrono::steady_clock::now();
+    std::string msg;
+    try
+    {
+        packed
+        (
+            bed
+            (
+                "region { shape box; min (0 0 0); max (100e-6 100e-6 100e-6); }",
+                "volumeFraction 0.5;",
+                "basis number; fractions { api 1; }"
+            )
+        );
+    }
+    catch (const Foam::error& e)
+    {
+        msg = e.message();
+    }
+    const double seconds = std::chrono::duration<double>
+    (
+        std::chrono::steady_clock::now() - t0
+    ).count();
+
+    std::cout << "  unreachable 0.5: failed after " << seconds << " s: "
+              << msg.substr(0, msg.find('\n')) << std::endl;
+
+    EXPECT_NE(msg.find("could not place particle"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("maxAttempts"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("Reached solid fraction"), std::string::npos) << msg;
+    EXPECT_LT(seconds, 30);
+
+    EXPECT_THROW
+    (
+        packed
+        (
+            bed
+            (
+                "region { shape box; min (0 0 0); max (100e-6 100e-6 100e-6); }",
+                "volumeFraction 0.75;",
+                "basis number; fractions { api 1; }"
+            )
+        ),
+        Foam::error
+    );
+}
+
+
+// Bad input: clear FatalIOErrors naming the key and the valid choices
+TEST(regionPacking, badInputIsRejected)
+{
+    FatalError.throwExceptions();
+    FatalIOError.throwExceptions();
+
+    auto message = [](const std::string& text, const bool withMaterials = true)
+        -> std::string
+    {
+        try
+        {
+            dpiInjectionModel::New
+            (
+                "bed", toDict(text), withMaterials ? &materials() : nullptr
+            );
+        }
+        catch (const Foam::error& e)
+        {
+            return e.message();
+        }
+        return "";
+    };
+    auto has = [](const std::string& s, const std::string& what)
+    {
+        return s.find(what) != std::string::npos;
+    };
+
+    const std::string box =
+        "region { shape box; min (0 0 0); max (1e-4 1e-4 1e-4); }";
+    const std::string amount = "volumeFraction 0.2;";
+    const std::string fr = "basis number; fractions { api 1; }";
+
+    EXPECT_EQ(message(bed(box, amount, fr)), "");
+
+    std::string m = message
+    (
+        bed("region { shape ball; radius 1e-4; }", amount, fr)
+    );
+    EXPECT_TRUE(has(m, "ball") && has(m, "sphere box cylinder cone")) << m;
+
+    m = message(bed(box, amount, "basis number; fractions { API 1; }"));
+    EXPECT_TRUE(has(m, "API") && has(m, "carrier")) << m;
+
+    m = message(bed(box, amount, "basis number; fractions { wall 1; }"));
+    EXPECT_TRUE(has(m, "wall material")) << m;
+
+    m = message(bed(box, amount, "basis number; fractions { api 0.5; mid 0.4; }"));
+    EXPECT_TRUE(has(m, "sum to")) << m;
+
+    m = message(bed(box, amount, "basis volume; fractions { api 1; }"));
+    EXPECT_TRUE(has(m, "basis") && has(m, "number mass")) << m;
+
+    m = message(bed(box, "volumeFraction 0.2; nParticles 5;", fr));
+    EXPECT_TRUE(has(m, "volumeFraction") && has(m, "nParticles")) << m;
+
+    m = message(bed(box, amount, fr), false);
+    EXPECT_TRUE(has(m, "material")) << m;
+
+    m = message
+    (
+        bed
+        (
+            "region { shape box; min (0 0 0); max (5e-5 1e-4 1e-4); }",
+            amount, "basis number; fractions { carrier 1; }"
+        )
+    );
+    EXPECT_TRUE(has(m, "does not fit")) << m;
+
+    m = message
+    (
+        bed
+        (
+            "region { shape cone; point1 (0 0 0); radius1 1e-4;"
+            " point2 (0 0 0); radius2 0; }",
+            amount, fr
+        )
+    );
+    EXPECT_TRUE(has(m, "point1") && has(m, "coincide")) << m;
+}
+
+// ************************************************************************* //
