@@ -21,6 +21,10 @@ Description
     The fluid time step (controlDict deltaT) is the coupling interval; the
     DEM sub-steps at dem/timeStep of the cloud dictionary.
 
+    Gas-particle forces (drag wenYuParcel, pressureGradient) are named in
+    the cloud dictionary's fluidCoupling/forces (see dpiFluidCoupling); they
+    need fluid incompressible.
+
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"

@@ -225,7 +225,8 @@ void Foam::incompressibleGas::solve(basicDPICloud& cloud)
         surfaceScalarField rAUcf("Dp", fvc::interpolate(rAUc));
 
         // Explicit cloud force and gravity as face fluxes (p is kinematic
-        // and excludes the hydrostatic part)
+        // and includes the hydrostatic part: at rest grad(p) = g, which
+        // the pressureGradient particle force turns into buoyancy)
         surfaceScalarField phicForces
         (
             fvc::flux(rAUc*cloudVolSUSu/rhoc_) + rAUcf*(g_ & mesh_.Sf())

@@ -11,6 +11,8 @@
 #include "Pstream.H"
 #include "PstreamReduceOps.H"
 #include "boundBox.H"
+#include "processorHalo.H"
+#include "PstreamCombineReduceOps.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -161,10 +163,12 @@ void Foam::agglomerateTracker::update
 (
     const demState& s,
     const demMaterials& materials,
-    labelList& agglomerateId
+    labelList& agglomerateId,
+    const processorHalo* halo
 )
 {
     const label n = s.size();
+    const label nOwned = s.owned();
 
     DynamicList<labelPair> pairs;
     linkedPairs(s, pairs);
@@ -180,54 +184,85 @@ void Foam::agglomerateTracker::update
         }
     }
 
-    // Per root: smallest globalId, size, carrier present, API primaries
-    Map<label> minId(2*n);
-    Map<label> size(2*n);
-    Map<bool> hasCarrier(2*n);
-    forAll(s.x, row)
+    labelList root(n);
+    labelList localSize(n, 0);
+    forAll(root, row)
     {
-        const label root = findRoot(parent, row);
-        const label gid = s.globalId[row];
-        auto iter = minId.find(root);
-        if (iter.found())
+        root[row] = findRoot(parent, row);
+        ++localSize[root[row]];
+    }
+
+    // Labels per row: smallest globalId, and 1 if a carrier is in the
+    // component. Locally: min/max over the component's rows; in parallel
+    // the ghosts' labels come from their owners, which may know more
+    agglomerateId = s.globalId;
+    labelList carrier(n, 0);
+    forAll(carrier, row)
+    {
+        carrier[row] = materials.api(s.typeId[row]) ? 0 : 1;
+    }
+
+    while (true)
+    {
+        labelList minId(n, labelMax);
+        labelList anyCarrier(n, 0);
+        forAll(root, row)
         {
-            iter.val() = min(iter.val(), gid);
-            ++size[root];
+            minId[root[row]] = min(minId[root[row]], agglomerateId[row]);
+            anyCarrier[root[row]] = max(anyCarrier[root[row]], carrier[row]);
         }
-        else
+
+        bool changed = false;
+        forAll(root, row)
         {
-            minId.insert(root, gid);
-            size.insert(root, 1);
-            hasCarrier.insert(root, false);
+            const label r = root[row];
+            if (agglomerateId[row] != minId[r] || carrier[row] != anyCarrier[r])
+            {
+                changed = true;
+            }
+            agglomerateId[row] = minId[r];
+            carrier[row] = anyCarrier[r];
         }
-        if (!materials.api(s.typeId[row]))
+
+        if (!halo)
         {
-            hasCarrier[root] = true;
+            break;
+        }
+
+        // Owners' labels to the ghosts; stop when no processor changed
+        halo->exchange(agglomerateId);
+        halo->exchange(carrier);
+        if (!returnReduce(changed, orOp<bool>()))
+        {
+            break;
         }
     }
 
-    agglomerateId.setSize(n);
     stats_ = statistics();
-    forAll(s.x, row)
+
+    // Size of each component over all processors: owned rows per id
+    Map<label> size;
+    for (label row = 0; row < nOwned; ++row)
     {
-        const label root = findRoot(parent, row);
-        agglomerateId[row] = minId[root];
+        size(agglomerateId[row]) += 1;
 
         if (materials.api(s.typeId[row]))
         {
             stats_.apiPrimaries += s.N[row];
-            if (size[root] == 1)
+            // Alone in its component: no link to any row, ghosts included
+            if (localSize[root[row]] == 1)
             {
                 stats_.singletAPIPrimaries += s.N[row];
             }
-            if (hasCarrier[root])
+            if (carrier[row])
             {
                 stats_.attachedAPIPrimaries += s.N[row];
             }
         }
     }
+    Pstream::mapCombineGather(size, plusEqOp<label>());
 
-    stats_.nAgglomerates = minId.size();
+    stats_.nAgglomerates = size.size();
     forAllConstIters(size, iter)
     {
         const label bin = sizeBin(iter.val());
@@ -238,16 +273,12 @@ void Foam::agglomerateTracker::update
         ++stats_.sizeHistogram[bin];
     }
 
-    // Sums over processors (components are per processor for now)
-    reduce(stats_.nAgglomerates, sumOp<label>());
+    // The counts and the histogram are on the master; sums of the rest
+    Pstream::scatter(stats_.nAgglomerates);
+    Pstream::scatter(stats_.sizeHistogram);
     reduce(stats_.apiPrimaries, sumOp<scalar>());
     reduce(stats_.singletAPIPrimaries, sumOp<scalar>());
     reduce(stats_.attachedAPIPrimaries, sumOp<scalar>());
-    label nBins = stats_.sizeHistogram.size();
-    reduce(nBins, maxOp<label>());
-    stats_.sizeHistogram.setSize(nBins, 0);
-    Pstream::listCombineGather(stats_.sizeHistogram, plusEqOp<label>());
-    Pstream::listCombineScatter(stats_.sizeHistogram);
 }
 
 

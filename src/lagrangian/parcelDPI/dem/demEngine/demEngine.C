@@ -373,12 +373,36 @@ void Foam::demEngine::rebuild(const demState& s)
         );
     }
 
+    // Wall contacts of parcels seen before keep their full state, normal
+    // included: a contact moving to a neighbouring triangle right after a
+    // rebuild must find its history, or results would depend on when the
+    // list is rebuilt (e.g. every fluid step in parallel, never in serial)
+    Map<label> oldRow;
+    List<DynamicList<wallContactState>> oldState;
+    if (wallState_.size() == workingIds_.size())
+    {
+        oldRow.resize(2*workingIds_.size());
+        forAll(workingIds_, q)
+        {
+            oldRow.insert(workingIds_[q], q);
+        }
+        oldState.transfer(wallState_);
+    }
+
     wallState_.setSize(n);
     DynamicList<label> keys;
     DynamicList<vector> xis;
     for (label p = 0; p < n; ++p)
     {
         wallState_[p].clear();
+
+        const auto iter = oldRow.cfind(s.globalId[p]);
+        if (iter.found() && iter.val() < oldState.size())
+        {
+            wallState_[p] = oldState[iter.val()];
+            continue;
+        }
+
         keys.clear();
         xis.clear();
         history_.history(s.globalId[p], keys, xis);
@@ -557,8 +581,14 @@ void Foam::demEngine::pairForces(const demState& s, const bool advance)
             pairTj_[k] -= Sr*M;
         }
 
-        ++diag_.nPairContacts;
-        diag_.maxOverlapRatio = max(diag_.maxOverlapRatio, c.delta/c.Rstar);
+        // Each pair counted once over all processors: where the row of the
+        // smaller globalId (first) is owned
+        if (i < s.owned())
+        {
+            ++diag_.nPairContacts;
+            diag_.maxOverlapRatio =
+                max(diag_.maxOverlapRatio, c.delta/c.Rstar);
+        }
     }
 }
 
@@ -706,8 +736,11 @@ void Foam::demEngine::wallForces
                 wallNew_.append(st);
             }
 
-            ++diag_.nWallContacts;
-            diag_.maxOverlapRatio = max(diag_.maxOverlapRatio, c.delta/rp);
+            if (p < s.owned())
+            {
+                ++diag_.nWallContacts;
+                diag_.maxOverlapRatio = max(diag_.maxOverlapRatio, c.delta/rp);
+            }
         }
     }
 
@@ -895,7 +928,8 @@ Foam::demEngine::demEngine(const dictionary& dict, const polyMesh* mesh)
     timeNeighbour_(0),
     timeIntegrate_(0),
     nSteps_(0),
-    nParticleSteps_(0)
+    nParticleSteps_(0),
+    halo_(nullptr)
 {
     if (!(timeStep_ > 0))
     {
@@ -963,7 +997,9 @@ void Foam::demEngine::evolve
 
     checkState(s);
 
-    const label n = s.size();
+    // Only owned rows are integrated; ghosts (halo copies) are refreshed
+    // by the halo from their owners
+    const label n = s.owned();
     const scalar dt = timeStep_;
     const scalar t0 = time_;
 
@@ -1002,6 +1038,11 @@ void Foam::demEngine::evolve
         }
 
         timeIntegrate_ += wallClock() - tc;
+
+        if (halo_)
+        {
+            halo_->update(s);
+        }
 
         evaluate(s, true);
 
@@ -1044,6 +1085,12 @@ void Foam::demEngine::evolve
     cacheV_ = s.v;
     cacheOmega_ = s.omega;
     cacheValid_ = true;
+}
+
+
+Foam::scalar Foam::demEngine::interactionReach(const scalar rMax) const
+{
+    return 2*rMax + cohesion_->maxRange(rMax) + search_.skin();
 }
 
 

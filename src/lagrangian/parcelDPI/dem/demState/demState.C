@@ -22,6 +22,7 @@ void Foam::demState::clear()
     fContact.clear();
     tContact.clear();
     contactForcesValid = false;
+    nOwned = -1;
 }
 
 

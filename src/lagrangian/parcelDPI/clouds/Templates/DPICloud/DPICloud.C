@@ -42,6 +42,22 @@ void Foam::DPICloud<CloudType>::setModels()
     engine_.reset(new demEngine(props.subDict("dem"), &this->mesh()));
     engine_->setTime(this->mesh().time().value());
 
+    // Gas-particle forces (issue 5): none unless fluidCoupling/forces
+    coupling_.reset
+    (
+        new dpiFluidCoupling
+        (
+            props, this->mesh(), this->U(), this->rho(), this->mu(),
+            engine_->materials()
+        )
+    );
+
+    if (Pstream::parRun())
+    {
+        halo_.reset(new processorHalo(this->mesh()));
+        engine_->setHalo(halo_.get());
+    }
+
     injectors_.clear();
     if (props.found("injectors"))
     {
@@ -366,6 +382,31 @@ void Foam::DPICloud<CloudType>::writeDiagnostics()
 }
 
 
+template<class CloudType>
+void Foam::DPICloud<CloudType>::buildHalo(const scalar Dt)
+{
+    scalar rMax = 0;
+    scalar vMax = 0;
+    for (label row = 0; row < state_.size(); ++row)
+    {
+        rMax = max(rMax, state_.r[row]);
+        vMax = max(vMax, mag(state_.v[row]));
+    }
+    reduce(rMax, maxOp<scalar>());
+    reduce(vMax, maxOp<scalar>());
+
+    // Both parcels of a pair may travel towards each other during the
+    // fluid step; 1.5 x the current speed covers moderate acceleration
+    const scalar reach =
+        engine_->interactionReach(rMax) + 2*1.5*vMax*Dt;
+
+    // The owners' contact histories travel with the ghosts at every build:
+    // a parcel new to this processor's halo brings the contacts it already
+    // has (walls included), so they continue here as they do at its owner
+    halo_->build(state_, reach, &engine_());
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -390,6 +431,7 @@ Foam::DPICloud<CloudType>::DPICloud
     trace_(nullptr),
     diagFile_(nullptr),
     agglomerates_(nullptr),
+    halo_(nullptr),
     agglomerateIds_(),
     escapedParcels_(),
     escapedPrimaries_(),
@@ -428,6 +470,7 @@ Foam::DPICloud<CloudType>::DPICloud
     trace_(nullptr),
     diagFile_(nullptr),
     agglomerates_(nullptr),
+    halo_(nullptr),
     agglomerateIds_(),
     escapedParcels_(c.escapedParcels_),
     escapedPrimaries_(c.escapedPrimaries_),
@@ -454,6 +497,7 @@ Foam::DPICloud<CloudType>::DPICloud
     trace_(nullptr),
     diagFile_(nullptr),
     agglomerates_(nullptr),
+    halo_(nullptr),
     agglomerateIds_(),
     escapedParcels_(),
     escapedPrimaries_(),
@@ -553,6 +597,11 @@ void Foam::DPICloud<CloudType>::motion
 
     copyToState(nInjected == 0);
 
+    if (halo_.valid())
+    {
+        buildHalo(Dt);
+    }
+
     demObserver* obs = observer_;
     if (!obs && trace_.valid())
     {
@@ -560,9 +609,17 @@ void Foam::DPICloud<CloudType>::motion
         obs = trace_.get();
     }
 
-    engine_->evolve(state_, Dt, this->g().value(), obs);
+    // DEM sub-steps with the fluid forces in state_.fExt, their reaction
+    // into UTrans/UCoeff (issue 5); only engine_->evolve without forces
+    coupling_->evolve(*this, *engine_, state_, Dt, this->g().value(), obs);
 
-    agglomerates_->update(state_, engine_->materials(), agglomerateIds_);
+    agglomerates_->update
+    (
+        state_,
+        engine_->materials(),
+        agglomerateIds_,
+        halo_.get()
+    );
     agglomerates_->write(t1);
 
     copyFromState();

@@ -3,6 +3,9 @@
 \*---------------------------------------------------------------------------*/
 
 #include "patchWall.H"
+#include "Pstream.H"
+#include "Map.H"
+#include "labelIOList.H"
 #include "polyMesh.H"
 #include "wordRes.H"
 #include "addToRunTimeSelectionTable.H"
@@ -38,20 +41,8 @@ void Foam::demWalls::patchWall::checkMesh
 }
 
 
-Foam::pointField Foam::demWalls::patchWall::meshPoints
-(
-    const word& name,
-    const dictionary& dict,
-    const polyMesh* mesh
-)
-{
-    // The constructor's arguments are evaluated in any order: check here too
-    checkMesh(name, dict, mesh);
-    return mesh->points();
-}
-
-
-Foam::triFaceList Foam::demWalls::patchWall::triangulate
+Foam::Tuple2<Foam::pointField, Foam::triFaceList>
+Foam::demWalls::patchWall::surface
 (
     const word& name,
     const dictionary& dict,
@@ -79,21 +70,125 @@ Foam::triFaceList Foam::demWalls::patchWall::triangulate
 
     const labelHashSet ids(pbm.patchSet(patchNames, false, true));
 
-    DynamicList<triFace> tris;
+    // Undecomposed labels of this processor's faces and points (identity
+    // in serial)
+    labelList faceAddr(identity(mesh->nFaces()));
+    labelList pointAddr(identity(mesh->nPoints()));
+    if (Pstream::parRun())
+    {
+        const fileName dir(mesh->facesInstance()/polyMesh::meshSubDir);
+        IOobject faceIO
+        (
+            "faceProcAddressing", dir, *mesh,
+            IOobject::MUST_READ, IOobject::NO_WRITE, false
+        );
+        IOobject pointIO
+        (
+            "pointProcAddressing", mesh->pointsInstance()/polyMesh::meshSubDir,
+            *mesh, IOobject::MUST_READ, IOobject::NO_WRITE, false
+        );
+        if
+        (
+            !faceIO.typeHeaderOk<labelIOList>(true)
+         || !pointIO.typeHeaderOk<labelIOList>(true)
+        )
+        {
+            FatalIOErrorInFunction(dict)
+                << "Wall " << name << " of type patch in a parallel run needs"
+                << " decomposePar's faceProcAddressing and"
+                << " pointProcAddressing in " << dir
+                << " (decompose the case with decomposePar)"
+                << exit(FatalIOError);
+        }
+        // faceProcAddressing holds (undecomposed face + 1), negative when
+        // flipped; boundary faces keep their orientation
+        const labelIOList fpa(faceIO);
+        forAll(fpa, facei)
+        {
+            faceAddr[facei] = mag(fpa[facei]) - 1;
+        }
+        pointAddr = labelIOList(pointIO);
+    }
+
+    // Local faces as (undecomposed face label, undecomposed point labels)
+    // and the coordinates of their points
+    DynamicList<label> faceIds;
+    DynamicList<face> faces;
+    Map<point> coords;
     for (const label patchi : ids.sortedToc())
     {
         const polyPatch& pp = pbm[patchi];
-        forAll(pp, facei)
+        forAll(pp, i)
         {
-            const face& f = pp[facei];
-            for (label k = 1; k + 1 < f.size(); ++k)
+            const label facei = pp.start() + i;
+            const face& f = pp[i];
+            face g(f.size());
+            forAll(f, k)
             {
-                tris.append(triFace(f[0], f[k], f[k + 1]));
+                g[k] = pointAddr[f[k]];
+                coords.set(g[k], mesh->points()[f[k]]);
             }
+            faceIds.append(faceAddr[facei]);
+            faces.append(g);
         }
     }
 
-    return triFaceList(std::move(tris));
+    // Everything to everyone: the wall is small next to the volume mesh
+    List<labelList> allIds(Pstream::nProcs());
+    List<faceList> allFaces(Pstream::nProcs());
+    List<Map<point>> allCoords(Pstream::nProcs());
+    allIds[Pstream::myProcNo()] = faceIds;
+    allFaces[Pstream::myProcNo()] = faces;
+    allCoords[Pstream::myProcNo()] = coords;
+    Pstream::gatherList(allIds);
+    Pstream::scatterList(allIds);
+    Pstream::gatherList(allFaces);
+    Pstream::scatterList(allFaces);
+    Pstream::gatherList(allCoords);
+    Pstream::scatterList(allCoords);
+
+    // Undecomposed face order; compact point labels in undecomposed order
+    Map<face> byId;
+    Map<point> allPoints;
+    forAll(allIds, proci)
+    {
+        forAll(allIds[proci], i)
+        {
+            byId.set(allIds[proci][i], allFaces[proci][i]);
+        }
+        forAllConstIters(allCoords[proci], iter)
+        {
+            allPoints.set(iter.key(), iter.val());
+        }
+    }
+
+    const labelList pointIds(allPoints.sortedToc());
+    Map<label> compact(2*pointIds.size());
+    pointField points(pointIds.size());
+    forAll(pointIds, i)
+    {
+        compact.insert(pointIds[i], i);
+        points[i] = allPoints[pointIds[i]];
+    }
+
+    DynamicList<triFace> tris;
+    for (const label id : byId.sortedToc())
+    {
+        const face& f = byId[id];
+        for (label k = 1; k + 1 < f.size(); ++k)
+        {
+            tris.append
+            (
+                triFace(compact[f[0]], compact[f[k]], compact[f[k + 1]])
+            );
+        }
+    }
+
+    return Tuple2<pointField, triFaceList>
+    (
+        std::move(points),
+        triFaceList(std::move(tris))
+    );
 }
 
 
@@ -103,16 +198,21 @@ Foam::demWalls::patchWall::patchWall
 (
     const word& name,
     const dictionary& dict,
+    Tuple2<pointField, triFaceList>&& surf
+)
+:
+    triangleWall(name, dict, std::move(surf.first()), std::move(surf.second()))
+{}
+
+
+Foam::demWalls::patchWall::patchWall
+(
+    const word& name,
+    const dictionary& dict,
     const polyMesh* mesh
 )
 :
-    triangleWall
-    (
-        name,
-        dict,
-        meshPoints(name, dict, mesh),
-        triangulate(name, dict, mesh)
-    )
+    patchWall(name, dict, surface(name, dict, mesh))
 {}
 
 

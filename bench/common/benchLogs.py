@@ -1,0 +1,123 @@
+"""Read the numbers the benchmarks report out of dpiFoam, LIGGGHTS and GNU
+time logs (bench/common)."""
+
+import glob
+import os
+import re
+
+FLOAT = r"([-+0-9.eE]+|nan|inf)"
+
+
+def gnuTime(path):
+    """Peak RSS [kB], elapsed [s], CPU percent, user+sys [s] of
+    /usr/bin/time -v (for mpirun: the largest single process)."""
+    out = {}
+    with open(path) as f:
+        text = f.read()
+    m = re.search(r"Maximum resident set size \(kbytes\): (\d+)", text)
+    out["maxRssKB"] = int(m.group(1)) if m else float("nan")
+    m = re.search(r"Elapsed \(wall clock\) time \(h:mm:ss or m:ss\): (\S+)",
+                  text)
+    if m:
+        parts = [float(p) for p in m.group(1).split(":")]
+        sec = 0.0
+        for p in parts:
+            sec = 60*sec + p
+        out["elapsed"] = sec
+    m = re.search(r"Percent of CPU this job got: (\d+)%", text)
+    out["cpuPercent"] = int(m.group(1)) if m else float("nan")
+    u = re.search(r"User time \(seconds\): " + FLOAT, text)
+    s = re.search(r"System time \(seconds\): " + FLOAT, text)
+    out["cpuTime"] = (float(u.group(1)) + float(s.group(1))) if u and s \
+        else float("nan")
+    return out
+
+
+def dpiFoamLog(path):
+    """DEM performance line, its breakdown, and the solver loop's CPU time
+    (ExecutionTime of the last minus the first fluid step: start-up and
+    injection excluded)."""
+    with open(path) as f:
+        text = f.read()
+    out = {}
+    m = re.search(r"^DEM performance: (\d+) steps, " + FLOAT
+                  + r" particle-steps/s", text, re.M)
+    if not m:
+        raise RuntimeError("no DEM performance line in " + path)
+    out["steps"] = int(m.group(1))
+    out["engineRate"] = float(m.group(2))
+    m = re.search(r"pair " + FLOAT + r" s \(" + FLOAT + r" %\), wall "
+                  + FLOAT + r" s \(" + FLOAT + r" %\), neighbour " + FLOAT
+                  + r" s \(" + FLOAT + r" %, (\d+) builds\), integrate "
+                  + FLOAT + r" s \(" + FLOAT + r" %\)", text)
+    out["tPair"], out["tWall"], out["tNeighbour"], out["tIntegrate"] = (
+        float(m.group(1)), float(m.group(3)), float(m.group(5)),
+        float(m.group(8)))
+    out["builds"] = int(m.group(7))
+    out["tEngine"] = (out["tPair"] + out["tWall"] + out["tNeighbour"]
+                      + out["tIntegrate"])
+    exe = [float(x) for x in
+           re.findall(r"^ExecutionTime = " + FLOAT + " s", text, re.M)]
+    clk = [float(x) for x in
+           re.findall(r"ClockTime = " + FLOAT + " s", text)]
+    out["nFluid"] = len(exe)
+    out["loopCpu"] = exe[-1] - exe[0] if len(exe) > 1 else float("nan")
+    out["loopClock"] = clk[-1] - clk[0] if len(clk) > 1 else float("nan")
+    inj = re.findall(r"Injected (\d+) parcels", text)
+    out["injected"] = sum(int(x) for x in inj)
+    lost = re.findall(r"lost through wall (\d+)", text)
+    out["lostThroughWalls"] = int(lost[-1]) if lost else 0
+    out["parallel"] = bool(re.search(r"^Exec\s*:.*-parallel", text, re.M))
+    m = re.search(r"^nProcs\s*:\s*(\d+)", text, re.M)
+    out["nProcs"] = int(m.group(1)) if m else 1
+    return out
+
+
+def demDiagnostics(case):
+    """Last row of postProcessing/dpiCloud/demDiagnostics/*/demDiagnostics.dat:
+    time KE rotKE nPairContacts nWallContacts maxOverlap/R* nParcels."""
+    files = sorted(glob.glob(os.path.join(
+        case, "postProcessing", "dpiCloud", "demDiagnostics", "*",
+        "demDiagnostics.dat")))
+    rows = []
+    for fn in files:
+        with open(fn) as f:
+            for line in f:
+                if line.strip() and not line.startswith("#"):
+                    rows.append([float(x) for x in line.split()])
+    if not rows:
+        raise RuntimeError("no DEM diagnostics in " + case)
+    rows.sort(key=lambda r: r[0])
+    keys = ("time", "KE", "rotKE", "nPair", "nWall", "maxOverlap", "nParcels")
+    out = dict(zip(keys, rows[-1]))
+    out["KEfirst"] = rows[0][1]
+    return out
+
+
+def liggghtsLog(path):
+    """Loop time, steps, atoms and the timing breakdown of a LIGGGHTS run."""
+    with open(path) as f:
+        text = f.read()
+    m = re.search(r"Loop time of " + FLOAT + r" on (\d+) procs for (\d+) "
+                  r"steps with (\d+) atoms", text)
+    if not m:
+        raise RuntimeError("no 'Loop time' in " + path)
+    out = {"loop": float(m.group(1)), "procs": int(m.group(2)),
+           "steps": int(m.group(3)), "atoms": int(m.group(4))}
+    # LIGGGHTS 3.8: "Pair  time (%) = 0.27 (31.4)"; walls and the
+    # integrator are in Modify/Other
+    for sec in ("Pair", "Neigh", "Comm", "Outpt", "Modify", "Other"):
+        mm = re.search(r"^" + sec + r"\s+time \(%\) = " + FLOAT, text, re.M)
+        if mm:
+            out["t" + sec] = float(mm.group(1))
+    # Last thermo row before the loop line: step atoms ke rotational-ke
+    head = text[:m.start()].rsplit("Step", 1)
+    rows = [ln.split() for ln in head[-1].splitlines()[1:]
+            if ln.split() and ln.split()[0].isdigit()] if len(head) > 1 \
+        else []
+    if rows:
+        out["KE"] = float(rows[-1][2])
+        out["rotKE"] = float(rows[-1][3])
+    mm = re.search(r"Neighbor list builds = (\d+)", text)
+    out["builds"] = int(mm.group(1)) if mm else -1
+    return out

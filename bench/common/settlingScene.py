@@ -1,0 +1,428 @@
+#!/usr/bin/python3
+"""The settling-carriers scene shared by the benchmarks in bench/.
+
+N lactose carriers (70 um, 1520 kg/m3, E 5e8 Pa, nu 0.35, e 0.85, mu 0.45,
+no rolling friction, no cohesion) placed at random without overlaps in a
+cubic box of walls at a given solids fraction (deterministic seed), each
+with a random velocity (isotropic Gaussian, rms speed vrms, capped at
+2.5 vrms), falling under gravity. At 1e-8 s per DEM step a few thousand
+steps are a few tens of microseconds: gravity alone would not bring
+particles placed apart into contact in that time, the random velocities
+(a stirred powder settling) do.
+
+Writers:
+    dpi <dir>       a dpiFoam DEM-only case (fluid none)
+    liggghts <dir>  the same scene for stock LIGGGHTS 3.8 (hertz/history)
+
+Usage:
+    settlingScene.py dpi <dir> --n 2000 --steps 4000 [--fluid-every 1000]
+    settlingScene.py liggghts <dir> --n 2000 --steps 4000
+Common options: --phi 0.15 --vrms 0.5 --seed 20240 --dt 1e-8
+                --order random|morton (list order, same particles)
+"""
+
+import argparse
+import math
+import os
+import sys
+
+import numpy as np
+
+# Material of the carriers and the walls (both types use it)
+DIAMETER = 70e-6        # [m]
+DENSITY = 1520.0        # [kg/m3]
+YOUNG = 5e8             # [Pa]
+POISSON = 0.35
+RESTITUTION = 0.85
+FRICTION = 0.45
+GRAVITY = 9.81          # [m/s2], -z
+
+
+def generate(n, phi, vrms, seed):
+    """Positions, velocities and box edge L for n carriers.
+
+    Random sequential addition on a cell grid: candidate centres uniform in
+    [r + gap, L - r - gap]^3, accepted when no accepted centre is closer
+    than d (1 + 1e-3). At phi <= 0.2 this needs ~1.3 candidates a particle.
+    """
+    d = DIAMETER
+    r = 0.5*d
+    vp = math.pi/6*d**3
+    L = (n*vp/phi)**(1/3)
+    gap = 0.01*d
+    lo, hi = r + gap, L - r - gap
+    dmin2 = (d*(1 + 1e-3))**2
+
+    rng = np.random.default_rng(seed)
+    h = d*(1 + 1e-3)                 # cell size: partners within 27 cells
+    nc = max(1, int(L/h))
+    h = L/nc
+    grid = {}
+    x = np.empty((n, 3))
+    k = 0
+    tries = 0
+    batch = rng.uniform(lo, hi, size=(4096, 3))
+    b = 0
+    while k < n:
+        if b == len(batch):
+            batch = rng.uniform(lo, hi, size=(4096, 3))
+            b = 0
+        p = batch[b]
+        b += 1
+        tries += 1
+        if tries > 200*n:
+            sys.exit("settlingScene: cannot place %d particles at phi %g"
+                     % (n, phi))
+        c = (int(p[0]/h), int(p[1]/h), int(p[2]/h))
+        ok = True
+        for i in (c[0] - 1, c[0], c[0] + 1):
+            for j in (c[1] - 1, c[1], c[1] + 1):
+                for l in (c[2] - 1, c[2], c[2] + 1):
+                    for q in grid.get((i, j, l), ()):
+                        dx = x[q] - p
+                        if dx[0]*dx[0] + dx[1]*dx[1] + dx[2]*dx[2] < dmin2:
+                            ok = False
+                            break
+                    if not ok:
+                        break
+                if not ok:
+                    break
+            if not ok:
+                break
+        if ok:
+            x[k] = p
+            grid.setdefault(c, []).append(k)
+            k += 1
+
+    # Velocities: Gaussian components, rms speed vrms, capped at 2.5 vrms
+    sigma = vrms/math.sqrt(3.0)
+    v = rng.normal(0.0, sigma, size=(n, 3))
+    cap = 2.5*vrms
+    speed = np.linalg.norm(v, axis=1)
+    big = speed > cap
+    v[big] *= (cap/speed[big])[:, None]
+
+    return x, v, L
+
+
+def mortonOrder(x, L):
+    """Permutation that sorts the particles along a Morton (Z-order) curve
+    on cells of one diameter: neighbours in space become neighbours in
+    the list (the row order the DEM sees)."""
+    nc = max(1, int(L/DIAMETER))
+    ijk = np.clip((x/L*nc).astype(np.int64), 0, nc - 1)
+    code = np.zeros(len(x), dtype=np.int64)
+    for bit in range(21):
+        for d in range(3):
+            code |= ((ijk[:, d] >> bit) & 1) << (3*bit + d)
+    return np.argsort(code, kind="stable")
+
+
+def check(x, L):
+    """Smallest gap between particles and to the walls (for the log)."""
+    r = 0.5*DIAMETER
+    wall = min(x.min() - r, (L - x.max()) - r)
+    # Pair check on a grid (vectorised per cell would be overkill here)
+    h = DIAMETER
+    nc = max(1, int(L/h))
+    h = L/nc
+    cells = {}
+    for i, p in enumerate(x):
+        cells.setdefault(tuple((p/h).astype(int)), []).append(i)
+    best = np.inf
+    for c, members in cells.items():
+        near = []
+        for di in (-1, 0, 1):
+            for dj in (-1, 0, 1):
+                for dk in (-1, 0, 1):
+                    near += cells.get((c[0] + di, c[1] + dj, c[2] + dk), [])
+        near = np.array(near)
+        for i in members:
+            dd = np.linalg.norm(x[near] - x[i], axis=1)
+            dd = dd[near != i]
+            if dd.size:
+                best = min(best, dd.min())
+    return best - DIAMETER, wall
+
+
+def header(cls, obj):
+    return ("FoamFile\n{\n    version     2.0;\n    format      ascii;\n"
+            "    class       %s;\n    object      %s;\n}\n" % (cls, obj))
+
+
+def maxImpactVelocity(vrms):
+    # Two particles at the cap speed head-on, plus a margin
+    return max(1.0, 2*2.5*vrms*1.2)
+
+
+def writeDpi(case, x, v, L, args):
+    """A dpiFoam DEM-only case: box of walls (patch walls), carriers."""
+    for sub in ("system", "constant"):
+        os.makedirs(os.path.join(case, sub), exist_ok=True)
+
+    n = len(x)
+    dt = args.dt
+    # Mesh: cells of about 5 carrier diameters (a fluid mesh of a real run
+    # is of that order); the DEM does not use it, tracking does once per
+    # fluid step
+    nCells = max(4, int(round(L/(5*DIAMETER))))
+    with open(os.path.join(case, "system/blockMeshDict"), "w") as f:
+        f.write(header("dictionary", "blockMeshDict"))
+        f.write("// settlingCarriers: cubic box of edge %.9g m, all walls\n"
+                % L)
+        f.write("scale %.12g;\n" % L)
+        f.write("vertices\n(\n    (0 0 0) (1 0 0) (1 1 0) (0 1 0)\n"
+                "    (0 0 1) (1 0 1) (1 1 1) (0 1 1)\n);\n")
+        f.write("blocks\n(\n    hex (0 1 2 3 4 5 6 7) (%d %d %d) "
+                "simpleGrading (1 1 1)\n);\n" % (nCells, nCells, nCells))
+        f.write("boundary\n(\n    walls\n    {\n        type wall;\n"
+                "        faces\n        (\n"
+                "            (0 4 7 3) (2 6 5 1) (1 5 4 0)\n"
+                "            (0 3 2 1) (4 5 6 7) (3 7 6 2)\n"
+                "        );\n    }\n);\n")
+
+    every = args.fluid_every
+    nFluid = args.steps//every
+    with open(os.path.join(case, "system/controlDict"), "w") as f:
+        f.write(header("dictionary", "controlDict"))
+        f.write("// DEM only: deltaT = coupling interval = %d DEM steps of "
+                "%g s; %d fluid steps\n" % (every, dt, nFluid))
+        f.write("application     dpiFoam;\nstartFrom       startTime;\n"
+                "startTime       0;\nstopAt          endTime;\n")
+        f.write("endTime         %.12g;\n" % (nFluid*every*dt))
+        f.write("deltaT          %.12g;\n" % (every*dt))
+        f.write("writeControl    timeStep;\nwriteInterval   1000000;\n"
+                "purgeWrite      0;\nwriteFormat     binary;\n"
+                "writePrecision  17;\nwriteCompression off;\n"
+                "timeFormat      general;\ntimePrecision   10;\n"
+                "runTimeModifiable false;\n")
+
+    with open(os.path.join(case, "system/fvSchemes"), "w") as f:
+        f.write(header("dictionary", "fvSchemes"))
+        f.write("ddtSchemes { default Euler; }\n"
+                "gradSchemes { default Gauss linear; }\n"
+                "divSchemes { default none; }\n"
+                "laplacianSchemes { default Gauss linear corrected; }\n"
+                "interpolationSchemes { default linear; }\n"
+                "snGradSchemes { default corrected; }\n")
+    with open(os.path.join(case, "system/fvSolution"), "w") as f:
+        f.write(header("dictionary", "fvSolution"))
+        f.write("solvers {}\n")
+    with open(os.path.join(case, "system/decomposeParDict"), "w") as f:
+        f.write(header("dictionary", "decomposeParDict"))
+        f.write("numberOfSubdomains 2;\nmethod simple;\n"
+                "coeffs { n (2 1 1); }\n")
+
+    with open(os.path.join(case, "constant/couplingProperties"), "w") as f:
+        f.write(header("dictionary", "couplingProperties"))
+        f.write("fluid       none;\ncloudName   dpiCloud;\n")
+    with open(os.path.join(case, "constant/g"), "w") as f:
+        f.write(header("uniformDimensionedVectorField", "g"))
+        f.write("dimensions      [0 1 -2 0 0 0 0];\n"
+                "value           (0 0 %g);\n" % -GRAVITY)
+
+    with open(os.path.join(case, "constant/carrierParticles"), "w") as f:
+        f.write("// %d carriers, seed %d, phi %g, vrms %g m/s, order %s "
+                "(bench/common/settlingScene.py)\n"
+                % (n, args.seed, args.phi, args.vrms, args.order))
+        f.write("particles\n(\n")
+        for p, u in zip(x, v):
+            f.write("{ type carrier; position (%.10e %.10e %.10e); "
+                    "U (%.10e %.10e %.10e); }\n"
+                    % (p[0], p[1], p[2], u[0], u[1], u[2]))
+        f.write(");\n")
+
+    with open(os.path.join(case, "constant/dpiCloudProperties"), "w") as f:
+        f.write(header("dictionary", "dpiCloudProperties"))
+        f.write("""// settlingCarriers benchmark (bench/common/settlingScene.py)
+solution
+{
+    active          true;
+    coupled         false;
+    transient       yes;
+    cellValueSourceCorrection off;
+    maxCo           0.3;
+    interpolationSchemes { rho.none cell; U.none cell; mu.none cell; }
+    integrationSchemes { U Euler; }
+}
+
+constantProperties
+{
+    rho0            %(rho)g;
+    alphaMax        0.9;
+}
+
+subModels
+{
+    particleForces {}
+    injectionModels {}
+    dispersionModel none;
+    patchInteractionModel none;
+    stochasticCollisionModel none;
+    surfaceFilmModel none;
+}
+
+cloudFunctions {}
+
+dem
+{
+    timeStep        %(dt)g;
+
+    types
+    {
+        carrier
+        {
+            diameter        %(d)g;
+            density         %(rho)g;
+            youngsModulus   %(E)g;
+            poissonsRatio   %(nu)g;
+            N               1;
+        }
+        wallMaterial
+        {
+            youngsModulus   %(E)g;
+            poissonsRatio   %(nu)g;
+        }
+    }
+
+    pairs
+    {
+        default { restitution %(e)g; friction %(mu)g; rollingFriction 0; }
+    }
+
+    normalModel         hertzParcel;
+    tangentialModel     historyParcel;
+    rollingModel        none;
+    cohesionModel       none;
+
+    walls
+    {
+        box { type patch; patches (walls); material wallMaterial; }
+    }
+
+    // Verlet skin: the default (smallest diameter), stated for the peers
+    neighbourSearch { skin %(d)g; }
+
+    timeStepCheck { maxImpactVelocity %(vmax)g; }
+}
+
+injectors
+{
+    carriers
+    {
+        type        singleParticles;
+        #include    "carrierParticles"
+    }
+}
+""" % dict(rho=DENSITY, dt=dt, d=DIAMETER, E=YOUNG, nu=POISSON,
+           e=RESTITUTION, mu=FRICTION, vmax=maxImpactVelocity(args.vrms)))
+
+
+def writeLiggghts(case, x, v, L, args):
+    """The same scene for stock LIGGGHTS 3.8: hertz/history pair and six
+    primitive plane walls of the same material, same skin, nve/sphere."""
+    os.makedirs(case, exist_ok=True)
+    n = len(x)
+    with open(os.path.join(case, "data.settling"), "w") as f:
+        f.write("settlingCarriers: %d carriers, seed %d, phi %g, vrms %g\n\n"
+                % (n, args.seed, args.phi, args.vrms))
+        f.write("%d atoms\n2 atom types\n\n" % n)
+        for a in "xyz":
+            f.write("0 %.12g %slo %shi\n" % (L, a, a))
+        f.write("\nAtoms\n\n")
+        for i, p in enumerate(x):
+            f.write("%d 1 %g %g %.10e %.10e %.10e\n"
+                    % (i + 1, DIAMETER, DENSITY, p[0], p[1], p[2]))
+        f.write("\nVelocities\n\n")
+        for i, u in enumerate(v):
+            f.write("%d %.10e %.10e %.10e 0 0 0\n" % (i + 1, u[0], u[1], u[2]))
+
+    walls = ""
+    for a, name in (("x", "xplane"), ("y", "yplane"), ("z", "zplane")):
+        for side, pos in (("lo", 0.0), ("hi", L)):
+            walls += ("fix w%s%s all wall/gran model hertz tangential history"
+                      " primitive type 2 %s %.12g\n" % (a, side, name, pos))
+
+    with open(os.path.join(case, "in.settling"), "w") as f:
+        f.write("""# settlingCarriers in stock LIGGGHTS (bench/common/settlingScene.py)
+atom_style      granular
+atom_modify     map array
+boundary        f f f
+newton          off
+communicate     single vel yes
+units           si
+processors      * * *
+
+read_data       data.settling
+
+neighbor        %(skin)g bin
+neigh_modify    delay 0 every 1 check yes
+
+fix m1 all property/global youngsModulus peratomtype %(E)g %(E)g
+fix m2 all property/global poissonsRatio peratomtype %(nu)g %(nu)g
+fix m3 all property/global coefficientRestitution peratomtypepair 2 %(e)g %(e)g %(e)g %(e)g
+fix m4 all property/global coefficientFriction peratomtypepair 2 %(mu)g %(mu)g %(mu)g %(mu)g
+
+pair_style      gran model hertz tangential history
+pair_coeff      * *
+
+timestep        %(dt)g
+
+fix             grav all gravity %(g)g vector 0.0 0.0 -1.0
+%(walls)s
+fix             integr all nve/sphere
+
+compute         rke all erotate/sphere
+thermo_style    custom step atoms ke c_rke
+thermo          %(every)d
+thermo_modify   lost ignore norm no
+
+# -var nsteps 0 on the command line: set-up only (the CPU baseline)
+variable        nsteps index %(steps)d
+run             ${nsteps}
+""" % dict(skin=DIAMETER, E=YOUNG, nu=POISSON, e=RESTITUTION, mu=FRICTION,
+           dt=args.dt, g=GRAVITY, walls=walls, every=args.fluid_every,
+           steps=args.steps))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawTextHelpFormatter)
+    ap.add_argument("kind", choices=("dpi", "liggghts"))
+    ap.add_argument("case")
+    ap.add_argument("--n", type=int, required=True)
+    ap.add_argument("--steps", type=int, default=4000)
+    ap.add_argument("--fluid-every", type=int, default=1000,
+                    help="DEM steps per fluid (coupling) step")
+    ap.add_argument("--phi", type=float, default=0.15)
+    ap.add_argument("--vrms", type=float, default=0.5)
+    ap.add_argument("--seed", type=int, default=20240)
+    ap.add_argument("--dt", type=float, default=1e-8)
+    ap.add_argument("--order", choices=("random", "morton"), default="random",
+                    help="order of the particle list (the parcels' rows): "
+                    "random (as placed) or sorted along a Morton curve")
+    args = ap.parse_args()
+
+    if args.steps % args.fluid_every:
+        sys.exit("settlingScene: --steps must be a multiple of --fluid-every")
+
+    x, v, L = generate(args.n, args.phi, args.vrms, args.seed)
+    if args.order == "morton":
+        perm = mortonOrder(x, L)
+        x, v = x[perm], v[perm]
+    gapPair, gapWall = check(x, L)
+    if gapPair <= 0 or gapWall <= 0:
+        sys.exit("settlingScene: overlap in the generated packing")
+    print("settlingScene: %d carriers in a box of %.4g mm, phi %.3f, "
+          "smallest gap %.3g um (pairs) %.3g um (walls), vrms %g m/s"
+          % (args.n, L*1e3, args.n*math.pi/6*DIAMETER**3/L**3,
+             gapPair*1e6, gapWall*1e6, args.vrms))
+
+    if args.kind == "dpi":
+        writeDpi(args.case, x, v, L, args)
+    else:
+        writeLiggghts(args.case, x, v, L, args)
+
+
+if __name__ == "__main__":
+    main()

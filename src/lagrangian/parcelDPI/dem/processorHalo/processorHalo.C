@@ -1,0 +1,194 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+\*---------------------------------------------------------------------------*/
+
+#include "processorHalo.H"
+#include "demState.H"
+#include "demEngine.H"
+#include "PstreamBuffers.H"
+#include "UIndirectList.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::processorHalo::processorHalo(const polyMesh& mesh)
+:
+    procBb_(Pstream::nProcs()),
+    sendRows_(Pstream::nProcs()),
+    recvStart_(Pstream::nProcs(), 0),
+    recvSize_(Pstream::nProcs(), 0)
+{
+    procBb_[Pstream::myProcNo()] = boundBox(mesh.points(), false);
+    Pstream::gatherList(procBb_);
+    Pstream::scatterList(procBb_);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::processorHalo::build
+(
+    demState& s,
+    const scalar reach,
+    demEngine* engine
+)
+{
+    const label nOwned = s.size();
+    s.nOwned = nOwned;
+
+    forAll(sendRows_, proci)
+    {
+        DynamicList<label> rows;
+        if (proci != Pstream::myProcNo())
+        {
+            boundBox bb(procBb_[proci]);
+            bb.min() -= vector::uniform(reach);
+            bb.max() += vector::uniform(reach);
+            for (label p = 0; p < nOwned; ++p)
+            {
+                if (bb.contains(s.x[p]))
+                {
+                    rows.append(p);
+                }
+            }
+        }
+        sendRows_[proci].transfer(rows);
+    }
+
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+
+    DynamicList<label> keys;
+    DynamicList<vector> xi;
+    forAll(sendRows_, proci)
+    {
+        const labelList& rows = sendRows_[proci];
+        if (rows.empty())
+        {
+            continue;
+        }
+        UOPstream os(proci, pBufs);
+        os  << List<point>(UIndirectList<point>(s.x, rows))
+            << List<vector>(UIndirectList<vector>(s.v, rows))
+            << List<vector>(UIndirectList<vector>(s.omega, rows))
+            << List<scalar>(UIndirectList<scalar>(s.r, rows))
+            << List<scalar>(UIndirectList<scalar>(s.m, rows))
+            << List<scalar>(UIndirectList<scalar>(s.N, rows))
+            << List<label>(UIndirectList<label>(s.typeId, rows))
+            << List<label>(UIndirectList<label>(s.globalId, rows));
+
+        os  << (engine != nullptr);
+        if (engine)
+        {
+            List<labelList> allKeys(rows.size());
+            List<List<vector>> allXi(rows.size());
+            forAll(rows, k)
+            {
+                keys.clear();
+                xi.clear();
+                engine->history(s.globalId[rows[k]], keys, xi);
+                allKeys[k] = keys;
+                allXi[k] = xi;
+            }
+            os  << allKeys << allXi;
+        }
+    }
+
+    labelList recvSizes;
+    pBufs.finishedSends(recvSizes);
+
+    recvStart_ = s.size();
+    recvSize_ = 0;
+    forAll(recvSizes, proci)
+    {
+        if (!recvSizes[proci] || proci == Pstream::myProcNo())
+        {
+            continue;
+        }
+        UIPstream is(proci, pBufs);
+        const List<point> x(is);
+        const List<vector> v(is);
+        const List<vector> omega(is);
+        const List<scalar> r(is);
+        const List<scalar> m(is);
+        const List<scalar> N(is);
+        const labelList typeId(is);
+        const labelList globalId(is);
+
+        recvStart_[proci] = s.size();
+        recvSize_[proci] = x.size();
+        forAll(x, k)
+        {
+            const label row = s.append
+            (
+                x[k], v[k], omega[k], r[k], m[k], N[k], typeId[k], globalId[k]
+            );
+            // Not integrated here: its forces are never used
+            s.fContact[row] = Zero;
+            s.tContact[row] = Zero;
+        }
+
+        bool withHistory = false;
+        is  >> withHistory;
+        if (withHistory && engine)
+        {
+            const List<labelList> allKeys(is);
+            const List<List<vector>> allXi(is);
+            forAll(globalId, k)
+            {
+                engine->setHistory(globalId[k], allKeys[k], allXi[k]);
+            }
+        }
+    }
+}
+
+
+void Foam::processorHalo::update(demState& s)
+{
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+
+    forAll(sendRows_, proci)
+    {
+        const labelList& rows = sendRows_[proci];
+        if (rows.size())
+        {
+            UOPstream os(proci, pBufs);
+            os  << List<point>(UIndirectList<point>(s.x, rows))
+                << List<vector>(UIndirectList<vector>(s.v, rows))
+                << List<vector>(UIndirectList<vector>(s.omega, rows));
+        }
+    }
+
+    pBufs.finishedSends();
+
+    forAll(recvSize_, proci)
+    {
+        if (!recvSize_[proci])
+        {
+            continue;
+        }
+        UIPstream is(proci, pBufs);
+        const List<point> x(is);
+        const List<vector> v(is);
+        const List<vector> omega(is);
+        const label start = recvStart_[proci];
+        forAll(x, k)
+        {
+            s.x[start + k] = x[k];
+            s.v[start + k] = v[k];
+            s.omega[start + k] = omega[k];
+        }
+    }
+}
+
+
+Foam::label Foam::processorHalo::nGhosts() const
+{
+    label n = 0;
+    forAll(recvSize_, proci)
+    {
+        n += recvSize_[proci];
+    }
+    return n;
+}
+
+
+// ************************************************************************* //

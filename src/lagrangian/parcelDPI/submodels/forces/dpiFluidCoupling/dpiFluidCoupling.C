@@ -1,0 +1,263 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+\*---------------------------------------------------------------------------*/
+
+#include "dpiFluidCoupling.H"
+#include "IOdictionary.H"
+#include "mathematicalConstants.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(dpiFluidCoupling, 0);
+}
+
+const Foam::Enum<Foam::dpiFluidCoupling::updateMode>
+Foam::dpiFluidCoupling::updateModeNames
+({
+    { updateMode::held, "held" },
+    { updateMode::subStep, "subStep" },
+});
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+bool Foam::dpiFluidCoupling::fluidPresent
+(
+    const fvMesh& mesh,
+    const volVectorField& U
+)
+{
+    if (mesh.foundObject<IOdictionary>("couplingProperties"))
+    {
+        const IOdictionary& cp =
+            mesh.lookupObject<IOdictionary>("couplingProperties");
+        return cp.getOrDefault<word>("fluid", "none") != "none";
+    }
+
+    return U.db().foundObject<volVectorField>(U.name());
+}
+
+
+const Foam::volScalarField& Foam::dpiFluidCoupling::lookupField
+(
+    const word& key,
+    const word& defaultName,
+    const word& user
+) const
+{
+    const word name(dict_.getOrDefault<word>(key, defaultName));
+
+    if (!mesh_.foundObject<volScalarField>(name))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "The gas field " << name << " (fluidCoupling/" << key
+            << ") needed by " << user << " does not exist." << nl
+            << "    Scalar fields of the case: "
+            << mesh_.sortedNames<volScalarField>() << nl
+            << "    Set fluidCoupling/" << key << " in " << dict_.name()
+            << exit(FatalIOError);
+    }
+
+    return mesh_.lookupObject<volScalarField>(name);
+}
+
+
+void Foam::dpiFluidCoupling::checkTimeStep(const demMaterials& mat) const
+{
+    const scalar Dt = mesh_.time().deltaTValue();
+
+    // Largest viscosity and smallest density: the shortest time
+    const scalar muMax = gMax(mu_.primitiveField());
+    const scalar rhoMin = gMin(rho_.primitiveField());
+    const scalar nuMax = muMax/rhoMin;
+
+    scalar tauMin = GREAT;
+    word tauType;
+
+    forAll(mat.names(), typei)
+    {
+        if (!mat.isParticleType(typei))
+        {
+            continue;
+        }
+
+        scalar tau = GREAT;
+        forAll(forces_, i)
+        {
+            tau = min
+            (
+                tau,
+                forces_[i].relaxationTime
+                (
+                    mat.diameter(typei), mat.density(typei), rhoMin, nuMax
+                )
+            );
+        }
+
+        if (tau < GREAT)
+        {
+            Info<< "    type " << mat.names()[typei]
+                << ": relaxation time " << tau << " s, fluid step/tau "
+                << Dt/tau << endl;
+        }
+
+        if (tau < tauMin)
+        {
+            tauMin = tau;
+            tauType = mat.names()[typei];
+        }
+    }
+
+    if (tauMin < GREAT && Dt > 0.2*tauMin)
+    {
+        WarningInFunction
+            << "The fluid step " << Dt << " s exceeds a fifth of the "
+            << "smallest particle relaxation time (type " << tauType
+            << ", tau_p = " << tauMin << " s, ratio " << Dt/tauMin << ")."
+            << nl
+            << "    With dragUpdate held the transient drag is "
+            << "inaccurate (unstable above a ratio of 2); reduce deltaT "
+            << "below " << 0.2*tauMin << " s or set dragUpdate subStep in "
+            << dict_.name() << endl;
+    }
+}
+
+
+void Foam::dpiFluidCoupling::setForces(demState& s)
+{
+    for (label i = 0; i < nRows_; ++i)
+    {
+        const dpiFluidForce::fluidState& fl = fluid_[i];
+        const vector& v = s.v[i];
+        const scalar d = 2*s.r[i];
+        const scalar N = s.N[i];
+
+        vector F(Zero);
+        vector Fc(Zero);
+        scalar Spc = 0;
+
+        forAll(forces_, k)
+        {
+            const dpiFluidForce::forceSuSp f =
+                forces_[k].force(fl, v, d, N);
+
+            const vector Fk(f.Su + f.Sp*(fl.U + fl.Uturb - v));
+            F += Fk;
+
+            if (forces_[k].coupled())
+            {
+                Fc += Fk;
+                Spc += f.Sp;
+            }
+        }
+
+        s.fExt[i] = F;
+        fCoupled_[i] = Fc;
+        spCoupled_[i] = Spc;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dpiFluidCoupling::dpiFluidCoupling
+(
+    const dictionary& cloudDict,
+    const fvMesh& mesh,
+    const volVectorField& U,
+    const volScalarField& rho,
+    const volScalarField& mu,
+    const demMaterials& mat
+)
+:
+    mesh_(mesh),
+    dict_(cloudDict.subOrEmptyDict("fluidCoupling")),
+    fluidOn_(fluidPresent(mesh, U)),
+    update_
+    (
+        updateModeNames.getOrDefault("dragUpdate", dict_, updateMode::held)
+    ),
+    interpolation_(dict_.getOrDefault<word>("interpolation", "cellPoint")),
+    forces_(),
+    U_(U),
+    rho_(rho),
+    mu_(mu),
+    alpha_(nullptr),
+    p_(nullptr),
+    fluid_(),
+    cell_(),
+    fCoupled_(),
+    spCoupled_(),
+    nRows_(0),
+    gasMomentum_(Zero)
+{
+    const dictionary forcesDict(dict_.subOrEmptyDict("forces"));
+    const wordList names(forcesDict.toc());
+
+    if (names.empty())
+    {
+        return;
+    }
+
+    if (!fluidOn_)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "Particle forces " << names << " are named in "
+            << dict_.name() << "/forces, but the case has no gas"
+            << " (constant/couplingProperties: fluid none)." << nl
+            << "    Drag and pressure-gradient forces need the gas: set"
+            << " fluid incompressible, or remove the forces"
+            << " (gravity acts through the parcel mass without them)."
+            << exit(FatalIOError);
+    }
+
+    if (interpolation_ != "cellPoint" && interpolation_ != "cell")
+    {
+        FatalIOErrorInFunction(dict_)
+            << "fluidCoupling/interpolation " << interpolation_
+            << " is not one of (cellPoint cell)" << exit(FatalIOError);
+    }
+
+    Info<< "Fluid coupling: forces " << names << ", dragUpdate "
+        << updateModeNames[update_] << ", interpolation " << interpolation_
+        << endl;
+
+    forces_.setSize(names.size());
+    bool needP = false;
+    forAll(names, i)
+    {
+        forces_.set
+        (
+            i,
+            dpiFluidForce::New(names[i], forcesDict.subOrEmptyDict(names[i]))
+        );
+        needP = needP || forces_[i].needsPressureGradient();
+    }
+
+    alpha_ = &lookupField
+    (
+        "alpha",
+        IOobject::groupName("alpha", U.group()),
+        "the void fraction at the parcels"
+    );
+
+    if (needP)
+    {
+        p_ = &lookupField("p", "p", "pressureGradient");
+    }
+
+    checkTimeStep(mat);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::vector Foam::dpiFluidCoupling::gasMomentum() const
+{
+    return returnReduce(gasMomentum_, sumOp<vector>());
+}
+
+
+// ************************************************************************* //

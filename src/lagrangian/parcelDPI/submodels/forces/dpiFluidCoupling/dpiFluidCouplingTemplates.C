@@ -1,0 +1,174 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+\*---------------------------------------------------------------------------*/
+
+#include "dpiFluidCoupling.H"
+#include "interpolation.H"
+#include "fvcGrad.H"
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::dpiFluidCoupling::sample(const CloudType& cloud, const demState& s)
+{
+    typedef typename CloudType::parcelType parcelType;
+
+    nRows_ = cloud.size();
+
+    if (s.size() < nRows_)
+    {
+        FatalErrorInFunction
+            << "The DEM state has " << s.size() << " rows for "
+            << nRows_ << " parcels" << exit(FatalError);
+    }
+
+    fluid_.setSize(nRows_);
+    cell_.setSize(nRows_);
+    fCoupled_.setSize(nRows_);
+    spCoupled_.setSize(nRows_);
+
+    autoPtr<interpolation<vector>> UInterp
+    (
+        interpolation<vector>::New(interpolation_, U_)
+    );
+    autoPtr<interpolation<scalar>> alphaInterp
+    (
+        interpolation<scalar>::New(interpolation_, *alpha_)
+    );
+
+    // Static pressure gradient [Pa/m]: the gas solves p/rho
+    tmp<volVectorField> tgradp;
+    autoPtr<interpolation<vector>> gradpInterp;
+    bool kinematicP = false;
+    if (p_)
+    {
+        tgradp = fvc::grad(*p_);
+        gradpInterp = interpolation<vector>::New(interpolation_, tgradp());
+        kinematicP = (p_->dimensions() == dimPressure/dimDensity);
+    }
+
+    label i = 0;
+    for (const parcelType& p : cloud)
+    {
+        if (s.globalId[i] != p.globalId())
+        {
+            FatalErrorInFunction
+                << "Row " << i << " of the DEM state is parcel "
+                << s.globalId[i] << ", expected " << p.globalId()
+                << ": the rows must be the parcels in list order"
+                << exit(FatalError);
+        }
+
+        const label celli = p.cell();
+        const barycentric& coords = p.coordinates();
+        const tetIndices tetIs(p.currentTetIndices());
+
+        dpiFluidForce::fluidState& fl = fluid_[i];
+        fl.U = UInterp->interpolate(coords, tetIs);
+        fl.alpha = alphaInterp->interpolate(coords, tetIs);
+        fl.rho = rho_[celli];
+        fl.nu = mu_[celli]/rho_[celli];
+        fl.Uturb = Zero;
+        fl.gradp = Zero;
+        if (gradpInterp.valid())
+        {
+            fl.gradp = gradpInterp->interpolate(coords, tetIs);
+            if (kinematicP)
+            {
+                fl.gradp *= fl.rho;
+            }
+        }
+
+        cell_[i] = celli;
+        ++i;
+    }
+}
+
+
+template<class CloudType>
+void Foam::dpiFluidCoupling::addSources(CloudType& cloud, const scalar dt)
+{
+    // The drag impulse on the parcels, for the log (coupled or not)
+    for (label i = 0; i < nRows_; ++i)
+    {
+        gasMomentum_ -= dt*fCoupled_[i];
+    }
+
+    if (!cloud.solution().coupled())
+    {
+        return;
+    }
+
+    volVectorField::Internal& UTrans = cloud.UTrans();
+    volScalarField::Internal& UCoeff = cloud.UCoeff();
+
+    // As KinematicParcel: UTrans += -F dt (the gas's share of the
+    // momentum), UCoeff += S_p dt; SU() divides by V and the fluid step
+    for (label i = 0; i < nRows_; ++i)
+    {
+        UTrans[cell_[i]] -= dt*fCoupled_[i];
+        UCoeff[cell_[i]] += dt*spCoupled_[i];
+    }
+}
+
+
+template<class CloudType>
+void Foam::dpiFluidCoupling::evolve
+(
+    CloudType& cloud,
+    demEngine& engine,
+    demState& s,
+    const scalar Dt,
+    const vector& g,
+    demObserver* obs
+)
+{
+    gasMomentum_ = Zero;
+
+    if (!active())
+    {
+        engine.evolve(s, Dt, g, obs);
+        return;
+    }
+
+    sample(cloud, s);
+
+    if (update_ == updateMode::held)
+    {
+        setForces(s);
+        engine.evolve(s, Dt, g, obs);
+        addSources(cloud, Dt);
+    }
+    else
+    {
+        const scalar dt = engine.timeStep();
+        const label nSub = label(Dt/dt + 0.5);
+
+        if (nSub < 1 || mag(Dt/dt - nSub) > 1e-6)
+        {
+            FatalErrorInFunction
+                << "The fluid time step " << Dt << " s is not an integer "
+                << "multiple of the DEM timeStep " << dt << " s"
+                << exit(FatalError);
+        }
+
+        for (label step = 0; step < nSub; ++step)
+        {
+            setForces(s);
+            engine.evolve(s, dt, g, obs);
+            addSources(cloud, dt);
+        }
+    }
+
+    // Forces are not held into the next fluid step
+    for (label i = 0; i < nRows_; ++i)
+    {
+        s.fExt[i] = Zero;
+    }
+
+    Info<< "    Fluid coupling: momentum to the gas " << gasMomentum()
+        << " kg m/s" << endl;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,51 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+\*---------------------------------------------------------------------------*/
+
+#include "dpiFluidForce.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(dpiFluidForce, 0);
+    defineRunTimeSelectionTable(dpiFluidForce, dictionary);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dpiFluidForce::dpiFluidForce
+(
+    const word& name,
+    const dictionary& coeffs
+)
+:
+    name_(name),
+    coeffDict_(coeffs)
+{}
+
+
+// * * * * * * * * * * * * * * * * * Selector  * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::dpiFluidForce>
+Foam::dpiFluidForce::New(const word& name, const dictionary& coeffs)
+{
+    Info<< "Selecting particle force " << name << endl;
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(name);
+
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInFunction(coeffs)
+            << "Unknown particle force " << name << " in " << coeffs.name()
+            << nl << nl << "Valid particle forces :" << nl
+            << dictionaryConstructorTablePtr_->sortedToc()
+            << exit(FatalIOError);
+    }
+
+    return autoPtr<dpiFluidForce>(cstrIter()(name, coeffs));
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,52 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+\*---------------------------------------------------------------------------*/
+
+#include "pressureGradient.H"
+#include "mathematicalConstants.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace dpiFluidForces
+{
+    defineTypeNameAndDebug(pressureGradient, 0);
+    addToRunTimeSelectionTable(dpiFluidForce, pressureGradient, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dpiFluidForces::pressureGradient::pressureGradient
+(
+    const word& name,
+    const dictionary& coeffs
+)
+:
+    dpiFluidForce(name, coeffs)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::dpiFluidForce::forceSuSp
+Foam::dpiFluidForces::pressureGradient::force
+(
+    const fluidState& fluid,
+    const vector& v,
+    const scalar d,
+    const scalar N
+) const
+{
+    using constant::mathematical::pi;
+
+    forceSuSp F;
+    F.Su = -(N*pi/6*pow3(d))*fluid.gradp;
+    return F;
+}
+
+
+// ************************************************************************* //

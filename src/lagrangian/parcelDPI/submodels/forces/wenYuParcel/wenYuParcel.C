@@ -1,0 +1,89 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+\*---------------------------------------------------------------------------*/
+
+#include "wenYuParcel.H"
+#include "mathematicalConstants.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace dpiFluidForces
+{
+    defineTypeNameAndDebug(wenYuParcel, 0);
+    addToRunTimeSelectionTable(dpiFluidForce, wenYuParcel, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dpiFluidForces::wenYuParcel::wenYuParcel
+(
+    const word& name,
+    const dictionary& coeffs
+)
+:
+    dpiFluidForce(name, coeffs)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::dpiFluidForces::wenYuParcel::primarySp
+(
+    const scalar d,
+    const scalar alpha,
+    const scalar rhof,
+    const scalar nuf,
+    const scalar magUr
+)
+{
+    using constant::mathematical::pi;
+
+    const scalar Re = alpha*d*magUr/nuf;
+    const scalar alphaPow = pow(alpha, -1.65);
+
+    if (Re < 1000)
+    {
+        // (pi/8) d^2 rho C_D |u_r| with C_D = 24/Re (...): written without
+        // 1/Re so that u_r = 0 is regular
+        return
+            3*pi*rhof*nuf*d/alpha*alphaPow*(1 + 0.15*pow(Re, 0.687));
+    }
+
+    return (pi/8)*sqr(d)*rhof*0.44*alphaPow*magUr;
+}
+
+
+Foam::scalar Foam::dpiFluidForces::wenYuParcel::relaxationTime
+(
+    const scalar d,
+    const scalar rhop,
+    const scalar rhof,
+    const scalar nuf
+) const
+{
+    return rhop*sqr(d)/(18*rhof*nuf);
+}
+
+
+Foam::dpiFluidForce::forceSuSp Foam::dpiFluidForces::wenYuParcel::force
+(
+    const fluidState& fluid,
+    const vector& v,
+    const scalar d,
+    const scalar N
+) const
+{
+    const vector Ur(fluid.U + fluid.Uturb - v);
+
+    forceSuSp F;
+    F.Sp = N*primarySp(d, fluid.alpha, fluid.rho, fluid.nu, mag(Ur));
+    return F;
+}
+
+
+// ************************************************************************* //
