@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "demMaterials.H"
+#include "typePairDicts.H"
 #include "mathematicalConstants.H"
 #include "HashSet.H"
 
@@ -81,33 +82,7 @@ void Foam::demMaterials::readType(const label typei, const dictionary& d)
 void Foam::demMaterials::readPairs(const dictionary& pairsDict)
 {
     const label n = names_.size();
-
-    // Every name the user may write, to catch typos in the pair entries
-    wordHashSet validNames;
-    validNames.insert("default");
-    for (label i = 0; i < n; ++i)
-    {
-        for (label j = 0; j < n; ++j)
-        {
-            validNames.insert(names_[i] + "-" + names_[j]);
-        }
-    }
-
-    for (const word& key : pairsDict.toc())
-    {
-        if (!validNames.found(key))
-        {
-            FatalIOErrorInFunction(pairsDict)
-                << "Unknown pair entry '" << key << "' in dictionary "
-                << pairsDict.name() << nl
-                << "Pair entries are named typeA-typeB (either order) or "
-                << "default, with types " << names_
-                << exit(FatalIOError);
-        }
-    }
-
-    const dictionary* defaultDict =
-        pairsDict.findDict("default", keyType::LITERAL);
+    const typePairDicts pairDicts(pairsDict, names_);
 
     pairs_.setSize(n*n);
 
@@ -115,28 +90,8 @@ void Foam::demMaterials::readPairs(const dictionary& pairsDict)
     {
         for (label j = i; j < n; ++j)
         {
-            const word ij(names_[i] + "-" + names_[j]);
-            const word ji(names_[j] + "-" + names_[i]);
-
-            const dictionary* pd = pairsDict.findDict(ij, keyType::LITERAL);
-            const dictionary* pdji =
-                pairsDict.findDict(ji, keyType::LITERAL);
-
-            if (pd && pdji && i != j)
-            {
-                FatalIOErrorInFunction(pairsDict)
-                    << "Pair " << ij << " is given twice (as " << ij
-                    << " and " << ji << ") in dictionary "
-                    << pairsDict.name() << exit(FatalIOError);
-            }
-            if (!pd)
-            {
-                pd = pdji;
-            }
-            if (!pd)
-            {
-                pd = defaultDict;
-            }
+            const word ij(pairDicts.pairName(i, j));
+            const dictionary* pd = pairDicts.find(i, j);
             if (!pd)
             {
                 FatalIOErrorInFunction(pairsDict)
@@ -152,11 +107,7 @@ void Foam::demMaterials::readPairs(const dictionary& pairsDict)
             // Keys missing from a specific entry fall back to the default
             auto from = [&](const word& key) -> const dictionary&
             {
-                if (!pd->found(key, keyType::LITERAL) && defaultDict)
-                {
-                    return *defaultDict;
-                }
-                return *pd;
+                return pairDicts.lookupDict(*pd, key);
             };
 
             demPairProperties p;

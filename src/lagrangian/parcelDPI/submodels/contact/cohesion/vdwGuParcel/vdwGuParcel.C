@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "vdwGuParcel.H"
+#include "typePairDicts.H"
 #include "demMaterials.H"
 #include "HashSet.H"
 #include "IOmanip.H"
@@ -378,31 +379,8 @@ Foam::cohesionContactModels::vdwGuParcel::vdwGuParcel(const dictionary& dict)
             << "s0 4.445e-9; } }; types: " << names << exit(FatalIOError);
     }
     const dictionary& pairsDict = *pairsDictPtr;
-
-    // Every name the user may write, to catch typos
-    wordHashSet validNames;
-    validNames.insert("default");
-    for (label i = 0; i < n; ++i)
-    {
-        for (label j = 0; j < n; ++j)
-        {
-            validNames.insert(names[i] + "-" + names[j]);
-        }
-    }
-    for (const word& key : pairsDict.toc())
-    {
-        if (!validNames.found(key))
-        {
-            FatalIOErrorInFunction(pairsDict)
-                << "Unknown pair entry '" << key << "' in dictionary "
-                << pairsDict.name() << nl
-                << "Pair entries are named typeA-typeB (either order) or "
-                << "default, with types " << names << exit(FatalIOError);
-        }
-    }
-
-    const dictionary* defaultDict =
-        pairsDict.findDict("default", keyType::LITERAL);
+    const typePairDicts pairDicts(pairsDict, names);
+    const dictionary* defaultDict = pairDicts.defaultDict();
 
     pairs_.setSize(n*n);
 
@@ -415,27 +393,8 @@ Foam::cohesionContactModels::vdwGuParcel::vdwGuParcel(const dictionary& dict)
                 wallCohesion_
              && ((radius[i] > 0 && isWall[j]) || (radius[j] > 0 && isWall[i]));
 
-            const word ij(names[i] + "-" + names[j]);
-            const word ji(names[j] + "-" + names[i]);
-
-            const dictionary* pd = pairsDict.findDict(ij, keyType::LITERAL);
-            const dictionary* pdji = pairsDict.findDict(ji, keyType::LITERAL);
-
-            if (pd && pdji && i != j)
-            {
-                FatalIOErrorInFunction(pairsDict)
-                    << "Pair " << ij << " is given twice (as " << ij
-                    << " and " << ji << ") in dictionary "
-                    << pairsDict.name() << exit(FatalIOError);
-            }
-            if (!pd)
-            {
-                pd = pdji;
-            }
-            if (!pd)
-            {
-                pd = defaultDict;
-            }
+            const word ij(pairDicts.pairName(i, j));
+            const dictionary* pd = pairDicts.find(i, j);
 
             pairCoeffs p;
             p.name = ij;
