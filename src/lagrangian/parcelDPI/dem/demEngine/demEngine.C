@@ -345,8 +345,9 @@ void Foam::demEngine::rebuild(const demState& s)
 
     search_.build(s, range);
 
-    // Walls must see every sphere within its radius plus cohesion range
-    const scalar reach = rMax + range;
+    // Walls must see every sphere within its radius plus cohesion range,
+    // and, for the near-wall test below, the skin
+    const scalar reach = rMax + range + search_.skin();
     if (reach > wallReach_)
     {
         // A little margin so a slightly larger parcel does not re-bin
@@ -354,6 +355,25 @@ void Foam::demEngine::rebuild(const demState& s)
         for (demWall& w : walls_)
         {
             w.prepare(wallReach_);
+        }
+    }
+
+    // Rows that may reach a wall before the next rebuild
+    nearWall_.setSize(n);
+    for (label p = 0; p < n; ++p)
+    {
+        const scalar rp = s.r[p];
+        const scalar query = rp + cohesion_->maxRange(rp) + search_.skin();
+        nearWall_[p] = false;
+        forAll(walls_, w)
+        {
+            wallBuf_.clear();
+            walls_[w].findContacts(s.x[p], query, wallBuf_);
+            if (wallBuf_.size())
+            {
+                nearWall_[p] = true;
+                break;
+            }
         }
     }
 
@@ -809,6 +829,10 @@ void Foam::demEngine::evaluate(demState& s, const bool advance)
 
     for (label p = 0; p < n; ++p)
     {
+        if (!nearWall_[p])
+        {
+            continue;
+        }
         wallForces(s, p, advance);
         for (const wallContribution& wc : wallContrib_)
         {
@@ -921,6 +945,7 @@ Foam::demEngine::demEngine(const dictionary& dict, const polyMesh* mesh)
     history_(),
     workingValid_(false),
     wallReach_(0),
+    nearWall_(),
     cacheValid_(false),
     diag_(),
     timePair_(0),

@@ -1,0 +1,105 @@
+#!/usr/bin/python3
+"""Read and write OpenFOAM ASCII lagrangian fields (IOField<label|scalar|vector>).
+
+A small helper for the tutorial scripts: no OpenFOAM Python bindings are
+needed. Handles the three ASCII list forms OpenFOAM writes:
+    N{value}                  (uniform)
+    N(v0 v1 ...)              (one line)
+    N\n(\nv0\nv1\n...\n)      (one entry per line)
+with vector entries written as (x y z).
+"""
+import os
+import re
+
+import numpy as np
+
+_HEADER_END = re.compile(r"^// \* \*.*$", re.M)
+
+
+def split_header(text):
+    """(header incl. the '// * *' line, body) of an OpenFOAM file."""
+    m = _HEADER_END.search(text)
+    if not m:
+        raise ValueError("no '// * * *' header separator")
+    return text[:m.end()], text[m.end():]
+
+
+def _parse_body(body):
+    body = re.sub(r"//.*", "", body)             # trailing comments
+    m = re.match(r"\s*(\d+)\s*([({])", body)
+    if not m:
+        raise ValueError("no list in field body")
+    n = int(m.group(1))
+    rest = body[m.end(1):].strip()
+    if rest.startswith("{"):                      # uniform
+        inner = rest[1:rest.index("}")].strip()
+        if inner.startswith("("):
+            v = [float(x) for x in inner.strip("()").split()]
+            return np.tile(np.array(v), (n, 1))
+        return np.full(n, float(inner))
+    # outer list: from the first '(' to its matching ')'
+    depth = 0
+    for k, ch in enumerate(rest):
+        if ch == "(":
+            depth += 1
+        elif ch == ")":
+            depth -= 1
+            if depth == 0:
+                break
+    inner = rest[1:k]
+    if "(" in inner:                               # vectors
+        vals = re.findall(r"\(([^()]*)\)", inner)
+        arr = np.array([[float(x) for x in v.split()] for v in vals])
+    else:
+        arr = np.array([float(x) for x in inner.split()])
+    if len(arr) != n:
+        raise ValueError("list size %d but %d entries" % (n, len(arr)))
+    return arr
+
+
+def read_field(path):
+    """The values of a lagrangian IOField as a numpy array ((n,) or (n, 3))."""
+    with open(path) as f:
+        _, body = split_header(f.read())
+    return _parse_body(body)
+
+
+def write_vector_field(path, values):
+    """Rewrite the list of a vector IOField, keeping its header."""
+    with open(path) as f:
+        header, _ = split_header(f.read())
+    values = np.atleast_2d(values)
+    lines = ["", "", "%d" % len(values), "("]
+    lines += ["(%.17g %.17g %.17g)" % tuple(v) for v in values]
+    lines += [")", "", "", "// " + "*"*73 + " //", ""]
+    with open(path, "w") as f:
+        f.write(header + "\n".join(lines))
+
+
+def cloud_dir(case, time, cloud="dpiCloud"):
+    return os.path.join(case, time, "lagrangian", cloud)
+
+
+def read_cloud(case, time, cloud="dpiCloud",
+               fields=("xDEM", "U", "d", "typeId", "nParticle", "globalId",
+                       "agglomerateId")):
+    """Dictionary of the cloud's fields at a time, sorted by globalId."""
+    d = cloud_dir(case, time, cloud)
+    out = {name: read_field(os.path.join(d, name)) for name in fields}
+    if "globalId" in out:
+        order = np.argsort(out["globalId"])
+        out = {k: v[order] for k, v in out.items()}
+    return out
+
+
+def times(case):
+    """Written time directories of a case (numeric names, sorted, '0' too)."""
+    ts = []
+    for name in os.listdir(case):
+        try:
+            t = float(name)
+        except ValueError:
+            continue
+        if os.path.isdir(os.path.join(case, name)):
+            ts.append((t, name))
+    return [name for _, name in sorted(ts)]
