@@ -31,6 +31,23 @@ void Foam::incompressibleGas::updateVoidFraction(const basicDPICloud& cloud)
 }
 
 
+void Foam::incompressibleGas::keepOldVoidFraction()
+{
+    // On a restart, keep the starting void fraction as the old time level
+    // from now on, so that the first fluid step's ddt(alphac) sees the
+    // change of the cloud over the step exactly as the straight run does
+    // (left lazy, oldTime() is created from the already updated field at
+    // the first step: ddt(alphac) = 0 there). A fresh run keeps the lazy
+    // behaviour on purpose: its first step injects the parcels, which
+    // appear without displacing the gas (otherwise N primaries appearing at
+    // once would push the gas aside and break the N invariance)
+    if (mesh_.time().timeIndex() > 0)
+    {
+        alphac_.oldTime();
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::incompressibleGas::incompressibleGas
@@ -149,6 +166,19 @@ Foam::incompressibleGas::incompressibleGas
 
 void Foam::incompressibleGas::attach(const basicDPICloud& cloud)
 {
+    // With a void fraction model (fluidCoupling/voidFraction) its alphaMin
+    // is the floor, the same the drag sees through alpha (issue 5)
+    const dpiVoidFraction* vf = cloud.fluidCoupling().voidFraction();
+    if (vf)
+    {
+        alphacMin_ = vf->alphaMin();
+        Info<< "Void fraction floor " << alphacMin_
+            << " (fluidCoupling/voidFraction/alphaMin)" << endl;
+        updateVoidFraction(cloud);
+        keepOldVoidFraction();
+        return;
+    }
+
     const dictionary& cp =
         cloud.particleProperties().subDict("constantProperties");
 
@@ -164,6 +194,7 @@ void Foam::incompressibleGas::attach(const basicDPICloud& cloud)
     alphacMin_ = 1 - alphaMax;
 
     updateVoidFraction(cloud);
+    keepOldVoidFraction();
 }
 
 

@@ -135,6 +135,28 @@ void Foam::DPICloud<CloudType>::readState()
 
     nextGlobalId_ = dpiDict.lookupOrDefault<label>("nextGlobalId", 0);
 
+    // A restart may change material and model coefficients, not the
+    // choice of models: the state written (histories, forces) belongs to
+    // the models that wrote it
+    const dictionary& demDict = this->particleProperties().subDict("dem");
+    const dictionary written(dpiDict.subOrEmptyDict("models"));
+    for (const word& key : written.toc())
+    {
+        const word before(written.get<word>(key));
+        const word now(demDict.get<word>(key));
+        if (before != now)
+        {
+            FatalIOErrorInFunction(demDict)
+                << "Restart with " << key << " " << now << " in dictionary "
+                << demDict.name() << ", but the state at time "
+                << this->db().time().timeName() << " was written with "
+                << key << " " << before << "." << nl
+                << "    A restart may change the models' coefficients, not"
+                << " the models: set " << key << " " << before << ";"
+                << exit(FatalIOError);
+        }
+    }
+
     // Parcels read from a restart carry their ids: never reissue one
     label maxId = -1;
     for (const parcelType& p : *this)
@@ -164,6 +186,18 @@ void Foam::DPICloud<CloudType>::storeCounters()
 {
     dictionary dpiDict;
     dpiDict.add("nextGlobalId", nextGlobalId_);
+
+    dictionary models;
+    const dictionary& demDict = this->particleProperties().subDict("dem");
+    for
+    (
+        const word key
+      : {"normalModel", "tangentialModel", "rollingModel", "cohesionModel"}
+    )
+    {
+        models.add(key, demDict.get<word>(key));
+    }
+    dpiDict.add("models", models);
 
     // Global sums, the same on every processor (readState gives them back
     // to the master only, so a restart on any decomposition counts once)
@@ -519,6 +553,43 @@ Foam::scalar Foam::DPICloud<CloudType>::nPrimaries(const label typeId) const
         }
     }
     return returnReduce(n, sumOp<scalar>());
+}
+
+
+// issue 6: dpiCloudInterface
+template<class CloudType>
+void Foam::DPICloud<CloudType>::samples(parcelSamples& s) const
+{
+    const label n = this->size();
+    s.position.setSize(n);
+    s.N.setSize(n);
+    s.api.setSize(n);
+    s.globalId.setSize(n);
+    s.agglomerateId.setSize(n);
+
+    label i = 0;
+    for (const parcelType& p : *this)
+    {
+        s.position[i] = p.xDEM();
+        s.N[i] = p.N();
+        s.api[i] = engine_.valid() && engine_->materials().api(p.typeId());
+        s.globalId[i] = p.globalId();
+        s.agglomerateId[i] = p.agglomerateId();
+        ++i;
+    }
+}
+
+
+// issue 5: void fraction hook
+template<class CloudType>
+const Foam::tmp<Foam::volScalarField>
+Foam::DPICloud<CloudType>::theta() const
+{
+    if (coupling_.valid() && coupling_->voidFraction())
+    {
+        return coupling_->voidFraction()->theta(*this);
+    }
+    return CloudType::theta();
 }
 
 

@@ -160,6 +160,29 @@ void Foam::dpiFluidCoupling::setForces(demState& s)
 }
 
 
+void Foam::dpiFluidCoupling::advanceDispersion
+(
+    const demState& s,
+    const scalar dt,
+    label sub
+)
+{
+    if (!dispersion_.valid())
+    {
+        return;
+    }
+
+    const label step = mesh_.time().timeIndex();
+    for (label i = 0; i < nRows_; ++i)
+    {
+        fluid_[i].Uturb = dispersion_->update
+        (
+            fluid_[i].Uturb, sgs_[i], dt, s.globalId[i], step, sub
+        );
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::dpiFluidCoupling::dpiFluidCoupling
@@ -191,13 +214,41 @@ Foam::dpiFluidCoupling::dpiFluidCoupling
     fCoupled_(),
     spCoupled_(),
     nRows_(0),
-    gasMomentum_(Zero)
+    gasMomentum_(Zero),
+    voidFraction_(nullptr),
+    dispersion_(nullptr),
+    sgs_()
 {
     const dictionary forcesDict(dict_.subOrEmptyDict("forces"));
     const wordList names(forcesDict.toc());
+    const bool wantVoidFraction = dict_.found("voidFraction");
+    const bool wantDispersion = dict_.found("turbulentDispersion");
+
+    if (!fluidOn_ && (wantVoidFraction || wantDispersion))
+    {
+        FatalIOErrorInFunction(dict_)
+            << (wantVoidFraction ? "voidFraction" : "turbulentDispersion")
+            << " is named in " << dict_.name() << ", but the case has no"
+            << " gas (constant/couplingProperties: fluid none)." << nl
+            << "    Set fluid incompressible, or remove it."
+            << exit(FatalIOError);
+    }
+
+    if (wantVoidFraction)
+    {
+        voidFraction_ = dpiVoidFraction::New(dict_.subDict("voidFraction"));
+    }
 
     if (names.empty())
     {
+        if (wantDispersion)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "turbulentDispersion is named in " << dict_.name()
+                << " without forces: the subgrid velocity acts through the"
+                << " drag. Name a drag (wenYuParcel) in fluidCoupling/forces"
+                << exit(FatalIOError);
+        }
         return;
     }
 
@@ -246,6 +297,52 @@ Foam::dpiFluidCoupling::dpiFluidCoupling
     if (needP)
     {
         p_ = &lookupField("p", "p", "pressureGradient");
+    }
+
+    if (wantDispersion)
+    {
+        bool drag = false;
+        forAll(forces_, i)
+        {
+            drag = drag
+             || (forces_[i].coupled() && forces_[i].velocityDependent());
+        }
+        if (!drag)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "turbulentDispersion is named in " << dict_.name()
+                << " but none of the forces " << names << " is a drag: the"
+                << " subgrid velocity acts through the drag. Add wenYuParcel"
+                << exit(FatalIOError);
+        }
+        dispersion_.reset
+        (
+            new dpiTurbulentDispersion(dict_.subDict("turbulentDispersion"))
+        );
+
+        // The closure is an LES subgrid model: say so if the gas is not LES
+        const word tpName
+        (
+            IOobject::groupName("turbulenceProperties", U.group())
+        );
+        if (mesh_.foundObject<IOdictionary>(tpName))
+        {
+            const word simType
+            (
+                mesh_.lookupObject<IOdictionary>(tpName)
+               .getOrDefault<word>("simulationType", "laminar")
+            );
+            if (simType != "LES")
+            {
+                WarningInFunction
+                    << "turbulentDispersion is an LES subgrid model (its k"
+                    << " comes from the resolved strain and the filter"
+                    << " width), but " << tpName << " selects "
+                    << simType << ": the resolved flow is then not"
+                    << " filtered at delta and u* has no consistent meaning"
+                    << endl;
+            }
+        }
     }
 
     checkTimeStep(mat);

@@ -26,6 +26,10 @@ void Foam::dpiFluidCoupling::sample(const CloudType& cloud, const demState& s)
     cell_.setSize(nRows_);
     fCoupled_.setSize(nRows_);
     spCoupled_.setSize(nRows_);
+    if (dispersion_.valid())
+    {
+        sgs_.setSize(nRows_);
+    }
 
     autoPtr<interpolation<vector>> UInterp
     (
@@ -45,6 +49,14 @@ void Foam::dpiFluidCoupling::sample(const CloudType& cloud, const demState& s)
         tgradp = fvc::grad(*p_);
         gradpInterp = interpolation<vector>::New(interpolation_, tgradp());
         kinematicP = (p_->dimensions() == dimPressure/dimDensity);
+    }
+
+    // Resolved velocity gradient for the subgrid closures (cell values,
+    // as the reference)
+    tmp<volTensorField> tgradU;
+    if (dispersion_.valid())
+    {
+        tgradU = fvc::grad(U_);
     }
 
     label i = 0;
@@ -69,6 +81,17 @@ void Foam::dpiFluidCoupling::sample(const CloudType& cloud, const demState& s)
         fl.rho = rho_[celli];
         fl.nu = mu_[celli]/rho_[celli];
         fl.Uturb = Zero;
+        if (dispersion_.valid())
+        {
+            // u* of the parcel, kept in its UTurb between fluid steps
+            fl.Uturb = p.UTurb();
+            sgs_[i] = dispersion_->closure
+            (
+                dispersion_->magS(tgradU()[celli]),
+                dispersion_->delta(mesh_.V()[celli]),
+                fl.nu
+            );
+        }
         fl.gradp = Zero;
         if (gradpInterp.valid())
         {
@@ -135,6 +158,7 @@ void Foam::dpiFluidCoupling::evolve
 
     if (update_ == updateMode::held)
     {
+        advanceDispersion(s, Dt, 0);
         setForces(s);
         engine.evolve(s, Dt, g, obs);
         addSources(cloud, Dt);
@@ -154,6 +178,7 @@ void Foam::dpiFluidCoupling::evolve
 
         for (label step = 0; step < nSub; ++step)
         {
+            advanceDispersion(s, dt, step + 1);
             setForces(s);
             engine.evolve(s, dt, g, obs);
             addSources(cloud, dt);
@@ -164,6 +189,28 @@ void Foam::dpiFluidCoupling::evolve
     for (label i = 0; i < nRows_; ++i)
     {
         s.fExt[i] = Zero;
+    }
+
+    if (dispersion_.valid())
+    {
+        // u* back into the parcels (rows in list order) and a log line
+        typedef typename CloudType::parcelType parcelType;
+        scalar sumU2 = 0;
+        scalar kMax = 0;
+        label i = 0;
+        for (parcelType& p : cloud)
+        {
+            p.UTurb() = fluid_[i].Uturb;
+            sumU2 += magSqr(fluid_[i].Uturb);
+            kMax = max(kMax, sgs_[i].k);
+            ++i;
+        }
+        reduce(sumU2, sumOp<scalar>());
+        reduce(kMax, maxOp<scalar>());
+        const label n = returnReduce(nRows_, sumOp<label>());
+        Info<< "    Turbulent dispersion: rms u* "
+            << Foam::sqrt(sumU2/max(3*n, 1)) << " m/s per component, max k "
+            << kMax << " m2/s2" << endl;
     }
 
     Info<< "    Fluid coupling: momentum to the gas " << gasMomentum()

@@ -1,0 +1,41 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+\*---------------------------------------------------------------------------*/
+
+#include "divided.H"
+#include "mathematicalConstants.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace dpiVoidFractions
+{
+    defineTypeNameAndDebug(divided, 0);
+    addToRunTimeSelectionTable(dpiVoidFraction, divided, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dpiVoidFractions::divided::divided(const dictionary& dict)
+:
+    dpiVoidFraction(dict)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::dpiVoidFractions::divided::solidVolume
+(
+    const scalar d,
+    const scalar  // N: ignored (one particle per parcel)
+) const
+{
+    return constant::mathematical::pi/6*d*d*d;
+}
+
+
+// ************************************************************************* //

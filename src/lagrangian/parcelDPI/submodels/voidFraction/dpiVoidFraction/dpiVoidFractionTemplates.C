@@ -1,0 +1,70 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+\*---------------------------------------------------------------------------*/
+
+#include "dpiVoidFraction.H"
+#include "volFields.H"
+#include "extrapolatedCalculatedFvPatchFields.H"
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::tmp<Foam::volScalarField>
+Foam::dpiVoidFraction::theta(const CloudType& cloud) const
+{
+    typedef typename CloudType::parcelType parcelType;
+
+    const fvMesh& mesh = cloud.mesh();
+
+    tmp<volScalarField> ttheta
+    (
+        new volScalarField
+        (
+            IOobject
+            (
+                cloud.name() + ":theta",
+                mesh.time().timeName(),
+                cloud.db(),
+                IOobject::NO_READ,
+                IOobject::NO_WRITE,
+                false
+            ),
+            mesh,
+            dimensionedScalar(dimless, Zero),
+            extrapolatedCalculatedFvPatchScalarField::typeName
+        )
+    );
+    volScalarField& theta = ttheta.ref();
+    scalarField& Vs = theta.primitiveFieldRef();
+
+    for (const parcelType& p : cloud)
+    {
+        distribute
+        (
+            mesh, p.position(), p.cell(), 0.5*p.d(),
+            solidVolume(p.d(), p.N()), Vs
+        );
+    }
+
+    // The solid volume the gas's floor will not see
+    scalar clipped = 0;
+    forAll(Vs, celli)
+    {
+        clipped += max(Vs[celli] - (1 - alphaMin_)*mesh.V()[celli], 0);
+    }
+    reduce(clipped, sumOp<scalar>());
+    if (clipped > 0)
+    {
+        Info<< "    Void fraction: floor alphaMin " << alphaMin_
+            << " clips a solid volume of " << clipped << " m^3 ("
+            << clipped/max(gSum(Vs), VSMALL) << " of the total)" << endl;
+    }
+
+    Vs /= mesh.V();
+    theta.correctBoundaryConditions();
+
+    return ttheta;
+}
+
+
+// ************************************************************************* //
