@@ -94,6 +94,10 @@ void Foam::demEngine::checkTimeStep(const dictionary& dict) const
     const scalar v = maxImpactVelocity_;
     const scalar dt = timeStep_;
 
+    // A table: 6 digits whatever the case's writePrecision (17 digits
+    // would overflow the columns)
+    const int oldPrecision = Info().precision(6);
+
     Info<< nl << "DEM time-step check: timeStep " << dt
         << " s, maxImpactVelocity " << v << " m/s" << nl
         << "    Hertz contact time t_H (elastic, dynamic reduced mass), "
@@ -215,6 +219,7 @@ void Foam::demEngine::checkTimeStep(const dictionary& dict) const
         }
     }
     Info<< endl;
+    Info().precision(oldPrecision);
 
     if (worstRatio < 3)
     {
