@@ -728,19 +728,16 @@ void Foam::DPICloud<CloudType>::info()
         << ", detached " << ag.apiPrimaries - ag.attachedAPIPrimaries
         << " (singlets " << ag.singletAPIPrimaries << ")" << nl;
 
-    const labelList escParcels(globalSum(escapedParcels_));
-    const scalarList escPrim(globalSum(escapedPrimaries_));
-    const labelList lost(globalSum(lostParcels_));
-    const polyBoundaryMesh& pbm = this->mesh().boundaryMesh();
-    forAll(pbm, patchi)
+    // The global per-patch totals stored by this step's motion
+    const dictionary& escDict =
+        this->outputProperties().subDict("dpiCloud").subDict("escaped");
+    for (const word& patchName : escDict.sortedToc())
     {
-        if (escParcels[patchi] || lost[patchi])
-        {
-            Info<< "    Patch " << pbm[patchi].name()
-                << ": escaped parcels " << escParcels[patchi]
-                << " (primaries " << escPrim[patchi] << ")"
-                << ", lost through wall " << lost[patchi] << nl;
-        }
+        const dictionary& d = escDict.subDict(patchName);
+        Info<< "    Patch " << patchName
+            << ": escaped parcels " << d.get<label>("parcels")
+            << " (primaries " << d.get<scalar>("primaries") << ")"
+            << ", lost through wall " << d.get<label>("lostParcels") << nl;
     }
 }
 
