@@ -4,6 +4,59 @@
 
 #include "incompressibleGas.H"
 #include "fixedFluxPressureFvPatchScalarField.H"
+#include "extrapolatedCalculatedFvPatchFields.H"
+
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+// Not fvc::reconstruct: in OpenFOAM 1912 it evaluates inv(tmp T) & tmp S,
+// whose product reuses the storage of the vector tmp S in place while the
+// field loops declare their pointers __restrict__, so the optimised build
+// may write the x and y components before reading them for z. Wherever the
+// face-area tensor T has off-diagonal terms (the O-grid's skewed cells) the
+// velocity came out wrong (an inlet cell of the O-grid tube got Uz = -6.3
+// m/s at the first step instead of -1.3e-5, and the run diverged within 3
+// steps; on orthogonal boxes T is diagonal and the error vanishes). The
+// same reconstruction here with named operands, so the product is written
+// to fresh storage (tests/cases/gasOGridTube)
+Foam::tmp<Foam::volVectorField> reconstructFlux
+(
+    const Foam::surfaceScalarField& ssf
+)
+{
+    using namespace Foam;
+
+    const fvMesh& mesh = ssf.mesh();
+    const surfaceVectorField SfHat(mesh.Sf()/mesh.magSf());
+    const volTensorField invT(inv(fvc::surfaceSum(SfHat*mesh.Sf())));
+    const volVectorField sumFlux(fvc::surfaceSum(SfHat*ssf));
+
+    tmp<volVectorField> tU
+    (
+        new volVectorField
+        (
+            IOobject
+            (
+                "reconstruct(" + ssf.name() + ')',
+                ssf.instance(),
+                mesh,
+                IOobject::NO_READ,
+                IOobject::NO_WRITE
+            ),
+            invT & sumFlux,
+            extrapolatedCalculatedFvPatchVectorField::typeName
+        )
+    );
+    tU.ref().correctBoundaryConditions();
+
+    return tU;
+}
+
+} // End anonymous namespace
+
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -269,7 +322,7 @@ void Foam::incompressibleGas::solve(basicDPICloud& cloud)
             (
                 UcEqn
              ==
-                fvc::reconstruct
+                reconstructFlux
                 (
                     phicForces/rAUcf - fvc::snGrad(p)*mesh_.magSf()
                 )
@@ -312,7 +365,7 @@ void Foam::incompressibleGas::solve(basicDPICloud& cloud)
                     phic = phiHbyA - pEqn.flux()/alphacf_;
                     p.relax();
                     Uc = HbyA
-                      + rAUc*fvc::reconstruct
+                      + rAUc*reconstructFlux
                         (
                             (phicForces - pEqn.flux()/alphacf_)/rAUcf
                         );
