@@ -19,7 +19,9 @@ wall2 (horizontal leg up to x = 29.5 mm), turn (the corner: x > 29.5 mm in
 the horizontal leg, z < 7 mm in the vertical leg), wall1 (vertical leg above
 z = 7 mm), inlet (z = 12.5 mm).
 
-Usage: makeBlockMeshDict.py [--ns 6] [--nr 4] [--dx 1e-3] > system/blockMeshDict
+Usage: makeBlockMeshDict.py [--ns 6] [--nr 4] [--dx 1e-3] [--straight] > system/blockMeshDict
+--straight: only the horizontal leg, extended to x = 40 mm with the inlet
+there (the gas-only O-grid test tests/cases/gasOGridTube uses it)
 """
 import argparse
 import math
@@ -28,6 +30,8 @@ ap = argparse.ArgumentParser()
 ap.add_argument("--ns", type=int, default=6, help="cells along a quarter circle")
 ap.add_argument("--nr", type=int, default=4, help="cells across the ring")
 ap.add_argument("--dx", type=float, default=1e-3, help="axial cell size [m]")
+ap.add_argument("--straight", action="store_true",
+                help="straight horizontal tube only (test mesh)")
 a = ap.parse_args()
 
 R = 3.5e-3           # tube radius
@@ -54,7 +58,11 @@ def mitre():
 def vert(z):
     return lambda a_, b_: (xc - b_, a_, z)
 
-stations = [horiz(xOut), horiz(xTurn), mitre(), vert(zTurn), vert(zIn)]
+if a.straight:
+    stations = [horiz(xOut), horiz(xTurn), horiz(0.033), horiz(0.035),
+                horiz(0.04)]
+else:
+    stations = [horiz(xOut), horiz(xTurn), mitre(), vert(zTurn), vert(zIn)]
 nS = len(stations)
 
 verts = []
@@ -154,7 +162,9 @@ out.append("""/*--------------------------------*- C++ -*-----------------------
 FoamFile { version 2.0; format ascii; class dictionary; object blockMeshDict; }
 
 scale 1;
-""" % " ".join("--%s %s" % kv for kv in vars(a).items()))
+""" % " ".join(
+    ["--%s %s" % (k, v) for k, v in vars(a).items() if k != "straight"]
+  + (["--straight"] if a.straight else [])))
 out.append("vertices\n(")
 for i, p in enumerate(verts):
     out.append("    %s    // %d" % (fmt(p), i))
