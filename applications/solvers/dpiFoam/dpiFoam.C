@@ -81,6 +81,7 @@ int main(int argc, char *argv[])
     #include "setRootCaseLists.H"
     #include "createTime.H"
     #include "createMesh.H"
+    #include "checkDecomposition.H"
     #include "readGravitationalAcceleration.H"
 
     IOdictionary couplingProperties

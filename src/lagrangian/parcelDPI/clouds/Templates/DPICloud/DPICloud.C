@@ -178,6 +178,52 @@ void Foam::DPICloud<CloudType>::readState()
         escapedPrimaries_[patchi] = d.lookupOrDefault<scalar>("primaries", 0);
         lostParcels_[patchi] = d.lookupOrDefault<label>("lostParcels", 0);
     }
+
+    checkCloudPresent(nextGlobalId_);
+}
+
+
+template<class CloudType>
+void Foam::DPICloud<CloudType>::checkCloudPresent(const label nIssued) const
+{
+    // A start time without parcels is legitimate (injection ahead, or the
+    // gas alone), unless the state written with that time says parcels were
+    // issued and did not all leave: then the cloud was not written or not
+    // reconstructed, and going on would silently run without the powder
+    const label nParcels = returnReduce(this->size(), sumOp<label>());
+    if (nParcels > 0)
+    {
+        return;
+    }
+
+    // The counters live on the master (readState)
+    label nGone = sum(escapedParcels_) + sum(lostParcels_);
+    Pstream::scatter(nGone);
+
+    const word cloudDir(this->db().time().timeName()/cloud::prefix/this->name());
+    if (nIssued > nGone)
+    {
+        FatalIOErrorInFunction(this->outputProperties())
+            << "Time " << this->db().time().timeName() << " has no parcels of"
+            << " cloud " << this->name() << " (" << cloudDir << "/positions"
+            << " not found or empty), but the cloud state in "
+            << this->outputProperties().objectPath() << " says " << nIssued
+            << " parcels were issued and " << nGone << " left the domain."
+            << nl << "    Restart from a time written with the cloud"
+            << " (after a parallel run: reconstructPar -lagrangianFields"
+            << " '(\".*\")'), or remove that state file to start without"
+            << " parcels."
+            << exit(FatalIOError);
+    }
+
+    if (injectors_.empty())
+    {
+        WarningInFunction
+            << "No parcels at time " << this->db().time().timeName()
+            << " (" << cloudDir << " is empty or missing) and no injectors in "
+            << this->particleProperties().name()
+            << ": the cloud stays empty" << endl;
+    }
 }
 
 
