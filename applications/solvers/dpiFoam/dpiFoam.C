@@ -23,7 +23,11 @@ Description
 
     Gas-particle forces (drag wenYuParcel, pressureGradient) are named in
     the cloud dictionary's fluidCoupling/forces (see dpiFluidCoupling); they
-    need fluid incompressible.
+    need fluid incompressible. Order of a fluid step: the cloud samples the
+    gas of the step's start and runs the DEM sub-steps (its forces' reaction
+    into UTrans/UCoeff), the gas is solved with the new void fraction and
+    that reaction, and the parcels receive the counterpart of the gas's
+    implicit drag (momentum balance, see incompressibleGas).
 
 \*---------------------------------------------------------------------------*/
 

@@ -267,19 +267,43 @@ void Foam::incompressibleGas::solve(basicDPICloud& cloud)
 
     updateVoidFraction(cloud);
 
-    // Cloud momentum source: the implicit part stays in the momentum matrix,
-    // the explicit part becomes a face force in the pressure equation
+    // Cloud momentum source: the implicit drag coefficient stays in the
+    // momentum matrix; the explicit part joins gravity in the cell force
+    // fc below
     fvVectorMatrix cloudSU(cloud.SU(Uc));
 
-    volVectorField cloudVolSUSu
+    // Explicit cell force per unit volume over rho [m/s2]: the particles' reaction and gravity on the gas (model A:
+    // alpha g). It enters the cell velocity as rAU fc, cell by cell, so
+    // that the gas gains exactly sum(fc V) (momentum balance with the
+    // parcels), and the face fluxes as flux(rAU fc), as DPMFoam's face
+    // force, so that a force balanced by the pressure gradient (still
+    // gas, hydrostatics, walls through fixedFluxPressure) gives no flux.
+    // The boundary value (zero gradient) carries the force into the
+    // fixedFluxPressure walls
+    volVectorField fc
     (
-        IOobject("cloudVolSUSu", runTime.timeName(), mesh_),
+        IOobject("cloudAndGravityForce", runTime.timeName(), mesh_),
         mesh_,
-        dimensionedVector(cloudSU.dimensions()/dimVolume, Zero),
+        dimensionedVector(dimAcceleration, Zero),
         zeroGradientFvPatchVectorField::typeName
     );
-    cloudVolSUSu.primitiveFieldRef() = -cloudSU.source()/mesh_.V();
-    cloudVolSUSu.correctBoundaryConditions();
+    fc.primitiveFieldRef() =
+        -cloudSU.source()/(rhoc_.primitiveField()*mesh_.V().field());
+    if (cloud.solution().coupled())
+    {
+        // Model A: gravity on the gas's own mass; the gas displaced by the
+        // parcels comes back as the reaction of their pressure force
+        fc.primitiveFieldRef() += alphac_.primitiveField()*g_.value();
+    }
+    else
+    {
+        // One-way: the gas ignores the parcels' momentum, so also the
+        // reaction of their pressure force that completes alpha g to g at
+        // rest; alpha g alone would make every parcel's cell a buoyant
+        // plume of the gas (theta g) that nothing balances
+        fc.primitiveFieldRef() += g_.value();
+    }
+    fc.correctBoundaryConditions();
     cloudSU.source() = Zero;
 
     {
@@ -294,10 +318,15 @@ void Foam::incompressibleGas::solve(basicDPICloud& cloud)
 
     while (pimple_.loop())
     {
+        // Conservative form of alpha DU/Dt (no -U (ddt(alpha) +
+        // div(alphaPhi)) term): the sum over the cells of the matrix is
+        // the change of the gas momentum plus boundary fluxes, whatever
+        // the continuity error of the convecting flux alphaPhic (updated
+        // after every pressure corrector, so that from the second outer
+        // corrector on it satisfies the continuity of this step)
         fvVectorMatrix UcEqn
         (
             fvm::ddt(alphac_, Uc) + fvm::div(alphaPhic_, Uc)
-          - fvm::Sp(fvc::ddt(alphac_) + fvc::div(alphaPhic_), Uc)
           + turbulence_->divDevRhoReff(Uc)
          ==
             (1.0/rhoc_)*cloudSU
@@ -308,13 +337,7 @@ void Foam::incompressibleGas::solve(basicDPICloud& cloud)
         volScalarField rAUc(1.0/UcEqn.A());
         surfaceScalarField rAUcf("Dp", fvc::interpolate(rAUc));
 
-        // Explicit cloud force and gravity as face fluxes (p is kinematic
-        // and includes the hydrostatic part: at rest grad(p) = g, which
-        // the pressureGradient particle force turns into buoyancy)
-        surfaceScalarField phicForces
-        (
-            fvc::flux(rAUc*cloudVolSUSu/rhoc_) + rAUcf*(g_ & mesh_.Sf())
-        );
+        const surfaceScalarField phicForces(fvc::flux(rAUc*fc));
 
         if (pimple_.momentumPredictor())
         {
@@ -322,10 +345,7 @@ void Foam::incompressibleGas::solve(basicDPICloud& cloud)
             (
                 UcEqn
              ==
-                reconstructFlux
-                (
-                    phicForces/rAUcf - fvc::snGrad(p)*mesh_.magSf()
-                )
+                fc - reconstructFlux(fvc::snGrad(p)*mesh_.magSf())
             );
         }
 
@@ -365,18 +385,21 @@ void Foam::incompressibleGas::solve(basicDPICloud& cloud)
                     phic = phiHbyA - pEqn.flux()/alphacf_;
                     p.relax();
                     Uc = HbyA
-                      + rAUc*reconstructFlux
+                      + rAUc*fc
+                      - rAUc*reconstructFlux
                         (
-                            (phicForces - pEqn.flux()/alphacf_)/rAUcf
+                            (pEqn.flux()/alphacf_)/rAUcf
                         );
                     Uc.correctBoundaryConditions();
                 }
             }
 
+            alphaPhic_ = alphacf_*phic;
+
             // Continuity error of the gas with void fraction
             volScalarField contErr
             (
-                fvc::ddt(alphac_) + fvc::div(alphacf_*phic)
+                fvc::ddt(alphac_) + fvc::div(alphaPhic_)
             );
             const scalar sumLocalContErr =
                 runTime.deltaTValue()
@@ -396,7 +419,8 @@ void Foam::incompressibleGas::solve(basicDPICloud& cloud)
         }
     }
 
-    alphaPhic_ = alphacf_*phic;
+    // The parcels' share of the implicit drag (momentum balance)
+    cloud.fluidCoupling().correctParcels(cloud, Uc);
 }
 
 

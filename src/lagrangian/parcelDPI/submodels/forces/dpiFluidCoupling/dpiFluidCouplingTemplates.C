@@ -5,6 +5,7 @@
 #include "dpiFluidCoupling.H"
 #include "interpolation.H"
 #include "fvcGrad.H"
+#include "Map.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -14,6 +15,7 @@ void Foam::dpiFluidCoupling::sample(const CloudType& cloud, const demState& s)
     typedef typename CloudType::parcelType parcelType;
 
     nRows_ = cloud.size();
+    sampleTimeIndex_ = mesh_.time().timeIndex();
 
     if (s.size() < nRows_)
     {
@@ -26,6 +28,15 @@ void Foam::dpiFluidCoupling::sample(const CloudType& cloud, const demState& s)
     cell_.setSize(nRows_);
     fCoupled_.setSize(nRows_);
     spCoupled_.setSize(nRows_);
+    spImpulse_.setSize(nRows_);
+    spImpulse_ = 0;
+    rowId_.setSize(nRows_);
+    rowMass_.setSize(nRows_);
+    spreadStart_.setSize(nRows_ + 1);
+    spreadCells_.clear();
+    spreadWeights_.clear();
+    DynamicList<label> cells;
+    DynamicList<scalar> weights;
     if (dispersion_.valid())
     {
         sgs_.setSize(nRows_);
@@ -103,8 +114,29 @@ void Foam::dpiFluidCoupling::sample(const CloudType& cloud, const demState& s)
         }
 
         cell_[i] = celli;
+        rowId_[i] = p.globalId();
+        rowMass_[i] = s.N[i]*s.m[i];
+
+        // Where the reaction goes: the void fraction's kernel, so that the
+        // gas receives the force where it sees the parcel's volume
+        spreadStart_[i] = spreadCells_.size();
+        if (voidFraction_.valid())
+        {
+            dpiVoidFraction::pointWeights
+            (
+                mesh_, p.position(), celli, 0.5*p.d(), cells, weights
+            );
+            spreadCells_.append(cells);
+            spreadWeights_.append(weights);
+        }
+        else
+        {
+            spreadCells_.append(celli);
+            spreadWeights_.append(1);
+        }
         ++i;
     }
+    spreadStart_[nRows_] = spreadCells_.size();
 }
 
 
@@ -126,11 +158,98 @@ void Foam::dpiFluidCoupling::addSources(CloudType& cloud, const scalar dt)
     volScalarField::Internal& UCoeff = cloud.UCoeff();
 
     // As KinematicParcel: UTrans += -F dt (the gas's share of the
-    // momentum), UCoeff += S_p dt; SU() divides by V and the fluid step
+    // momentum), UCoeff += S_p dt; SU() divides by V and the fluid step.
+    // Spread over the cells of the void fraction kernel with weights that
+    // sum to one: the gas receives exactly -F dt in total
     for (label i = 0; i < nRows_; ++i)
     {
-        UTrans[cell_[i]] -= dt*fCoupled_[i];
-        UCoeff[cell_[i]] += dt*spCoupled_[i];
+        const vector dU(-dt*fCoupled_[i]);
+        const scalar dC(dt*spCoupled_[i]);
+        for (label k = spreadStart_[i]; k < spreadStart_[i+1]; ++k)
+        {
+            UTrans[spreadCells_[k]] += spreadWeights_[k]*dU;
+            UCoeff[spreadCells_[k]] += spreadWeights_[k]*dC;
+        }
+        spImpulse_[i] += dC;
+    }
+}
+
+
+template<class CloudType>
+void Foam::dpiFluidCoupling::correctParcels
+(
+    CloudType& cloud,
+    const volVectorField& U
+) const
+{
+    typedef typename CloudType::parcelType parcelType;
+
+    if
+    (
+        !active()
+     || sampleTimeIndex_ != mesh_.time().timeIndex()
+     || !cloud.solution().coupled()
+     || !cloud.solution().semiImplicit("U")
+    )
+    {
+        return;
+    }
+
+    // The gas solved -S_p (U - U^o) besides the explicit -F: the parcels
+    // get +S_p (U - U^o), i.e. they too see the new gas velocity in the
+    // implicit part of their drag. The source coefficient scales UCoeff
+    // (KinematicCloud::scaleSources), so it scales this counterpart too
+    const scalar coeff = cloud.solution().relaxCoeff("U");
+    const volVectorField& U0 = U.oldTime();
+
+    Map<vector> dv(2*nRows_);
+    for (label i = 0; i < nRows_; ++i)
+    {
+        vector dU(Zero);
+        for (label k = spreadStart_[i]; k < spreadStart_[i+1]; ++k)
+        {
+            const label c = spreadCells_[k];
+            dU += spreadWeights_[k]*(U[c] - U0[c]);
+        }
+        dv.insert(rowId_[i], coeff*spImpulse_[i]*dU/rowMass_[i]);
+    }
+
+    // Parcels relocated on this processor
+    for (parcelType& p : cloud)
+    {
+        const auto iter = dv.cfind(p.globalId());
+        if (iter.found())
+        {
+            p.U() += *iter;
+            dv.erase(p.globalId());
+        }
+    }
+
+    if (Pstream::parRun())
+    {
+        // Parcels that moved to another processor in the relocation (those
+        // that left through an open patch are gone on every processor)
+        List<Map<vector>> remote(Pstream::nProcs());
+        remote[Pstream::myProcNo()] = dv;
+        Pstream::gatherList(remote);
+        Pstream::scatterList(remote);
+
+        for (parcelType& p : cloud)
+        {
+            forAll(remote, proci)
+            {
+                if (proci == Pstream::myProcNo())
+                {
+                    continue;
+                }
+                const auto iter = remote[proci].cfind(p.globalId());
+                if (iter.found())
+                {
+                    p.U() += *iter;
+                    break;
+                }
+            }
+        }
     }
 }
 

@@ -114,16 +114,19 @@ const Foam::vectorList& Foam::dpiVoidFraction::unitPoints()
 }
 
 
-void Foam::dpiVoidFraction::distribute
+void Foam::dpiVoidFraction::pointWeights
 (
     const polyMesh& mesh,
     const point& x,
     const label celli,
     const scalar R,
-    const scalar Vs,
-    scalarField& solidVolume
+    DynamicList<label>& cells,
+    DynamicList<scalar>& weights
 )
 {
+    cells.clear();
+    weights.clear();
+
     const vectorList& pts = unitPoints();
     const scalar rOut = 0.917902*R;
 
@@ -146,15 +149,17 @@ void Foam::dpiVoidFraction::distribute
                 break;
             }
         }
+
         if (inside)
         {
-            solidVolume[celli] += Vs;
+            cells.append(celli);
+            weights.append(1);
             return;
         }
     }
 
     const labelList& nbrs = mesh.cellCells()[celli];
-    const scalar Vpt = Vs/nPoints;
+    const scalar wPt = 1.0/nPoints;
 
     for (const vector& u : pts)
     {
@@ -186,7 +191,39 @@ void Foam::dpiVoidFraction::distribute
             }
         }
 
-        solidVolume[cellj] += Vpt;
+        // Merge repeated cells (a parcel spans a few cells at most)
+        const label k = cells.find(cellj);
+        if (k < 0)
+        {
+            cells.append(cellj);
+            weights.append(wPt);
+        }
+        else
+        {
+            weights[k] += wPt;
+        }
+    }
+}
+
+
+void Foam::dpiVoidFraction::distribute
+(
+    const polyMesh& mesh,
+    const point& x,
+    const label celli,
+    const scalar R,
+    const scalar Vs,
+    scalarField& solidVolume
+)
+{
+    DynamicList<label> cells;
+    DynamicList<scalar> weights;
+
+    pointWeights(mesh, x, celli, R, cells, weights);
+
+    forAll(cells, k)
+    {
+        solidVolume[cells[k]] += weights[k]*Vs;
     }
 }
 
