@@ -304,17 +304,15 @@ void Foam::demEngine::flushHistory()
     // reach) so the store is rebuilt from them
     history_.clear();
 
-    const DynamicList<labelPair>& pairs = search_.pairs();
-    forAll(pairs, k)
+    forAll(pairRow_, a)
     {
-        if (pairXi_[k] != vector::zero)
+        const label idi = workingIds_[pairRow_[a]];
+        for (label k = pairStart_[a]; k < pairStart_[a + 1]; ++k)
         {
-            history_.set
-            (
-                workingIds_[pairs[k].first()],
-                workingIds_[pairs[k].second()],
-                pairXi_[k]
-            );
+            if (pairHasXi_[k] && pairXi_[k] != vector::zero)
+            {
+                history_.set(idi, workingIds_[pairJ_[k]], pairXi_[k]);
+            }
         }
     }
 
@@ -348,7 +346,14 @@ void Foam::demEngine::rebuild(const demState& s)
     }
     const scalar range = cohesion_->maxRange(rMax);
 
-    search_.build(s, range);
+    search_.build
+    (
+        s,
+        [this](const scalar ri, const scalar rj)
+        {
+            return cohesion_->maxPairRange(ri, rj);
+        }
+    );
 
     // Walls must see every sphere within its radius plus cohesion range,
     // and, for the near-wall test below, the skin
@@ -363,39 +368,113 @@ void Foam::demEngine::rebuild(const demState& s)
         }
     }
 
-    // Rows that may reach a wall before the next rebuild
-    nearWall_.setSize(n);
+    // Rows that may reach a wall before the next rebuild, and the wall
+    // elements each may reach: no row moves more than half the skin before
+    // the next rebuild, so an element out of reach plus the skin now stays
+    // out of reach until then
+    const label nWalls = walls_.size();
+    nearWall_.clear();
+    wallCandStart_.setSize(n*nWalls + 1);
+    wallCand_.clear();
     for (label p = 0; p < n; ++p)
     {
         const scalar rp = s.r[p];
         const scalar query = rp + cohesion_->maxRange(rp) + search_.skin();
-        nearWall_[p] = false;
+        const label start = wallCand_.size();
         forAll(walls_, w)
         {
-            wallBuf_.clear();
-            walls_[w].findContacts(s.x[p], query, wallBuf_);
-            if (wallBuf_.size())
+            wallCandStart_[p*nWalls + w] = wallCand_.size();
+            walls_[w].findCandidates(s.x[p], query, wallCand_);
+        }
+        if (wallCand_.size() > start)
+        {
+            nearWall_.append(p);
+        }
+    }
+    wallCandStart_[n*nWalls] = wallCand_.size();
+
+    // The half list in globalId order (see pairRow_)
+    const DynamicList<labelPair>& pairs = search_.pairs();
+    const label np = pairs.size();
+    {
+        const labelUList& id = s.globalId;
+
+        labelList byId(identity(n));
+        std::sort
+        (
+            byId.begin(),
+            byId.end(),
+            [&id](const label a, const label b) { return id[a] < id[b]; }
+        );
+
+        labelList fill(n, 0);
+        for (const labelPair& pr : pairs)
+        {
+            ++fill[pr.first()];
+        }
+
+        pairRow_.setSize(n);
+        pairStart_.setSize(n + 1);
+        label nRows = 0;
+        label k = 0;
+        for (const label i : byId)
+        {
+            if (fill[i])
             {
-                nearWall_[p] = true;
-                break;
+                pairRow_[nRows] = i;
+                pairStart_[nRows] = k;
+                ++nRows;
+                const label count = fill[i];
+                fill[i] = k;
+                k += count;
             }
+        }
+        pairStart_[nRows] = k;
+        pairRow_.setSize(nRows);
+        pairStart_.setSize(nRows + 1);
+
+        pairJ_.setSize(np);
+        for (const labelPair& pr : pairs)
+        {
+            pairJ_[fill[pr.first()]++] = pr.second();
+        }
+
+        for (label a = 0; a < nRows; ++a)
+        {
+            std::sort
+            (
+                pairJ_.begin() + pairStart_[a],
+                pairJ_.begin() + pairStart_[a + 1],
+                [&id](const label a, const label b) { return id[a] < id[b]; }
+            );
         }
     }
 
-    // Working history from the store
-    const DynamicList<labelPair>& pairs = search_.pairs();
-    const label np = pairs.size();
+    // Per pair: the distance from which it cannot interact, and the working
+    // history from the store. The cut-off of the global range (as before
+    // per-pair ranges) is kept where it is the smaller, so that a pair at
+    // the edge of the range is decided exactly as it was; the per-pair one
+    // has a margin far above round-off, so it drops only pairs that are
+    // certainly out of range
+    pairCut2_.setSize(np);
     pairXi_.setSize(np);
-    pairF_.setSize(np);
-    pairTi_.setSize(np);
-    pairTj_.setSize(np);
-    forAll(pairs, k)
+    pairHasXi_.setSize(np);
+    forAll(pairRow_, a)
     {
-        pairXi_[k] = history_.find
-        (
-            s.globalId[pairs[k].first()],
-            s.globalId[pairs[k].second()]
-        );
+        const label i = pairRow_[a];
+        for (label k = pairStart_[a]; k < pairStart_[a + 1]; ++k)
+        {
+            const label j = pairJ_[k];
+            const scalar rSum = s.r[i] + s.r[j];
+            const scalar pairRange = cohesion_->maxPairRange(s.r[i], s.r[j]);
+            pairCut2_[k] = min
+            (
+                sqr(rSum + range),
+                sqr((rSum + pairRange)*(1 + 1e-9))
+            );
+            pairXi_[k] = history_.find(s.globalId[i], s.globalId[j]);
+            pairHasXi_[k] = (pairXi_[k] != vector::zero);
+        }
     }
 
     // Wall contacts of parcels seen before keep their full state, normal
@@ -449,67 +528,17 @@ void Foam::demEngine::rebuild(const demState& s)
     workingIds_ = s.globalId;
     workingValid_ = true;
 
-    // Per row, its pairs sorted by the partner's globalId, so the sums do
-    // not depend on the row order
-    csrStart_.setSize(n + 1);
-    csrStart_ = 0;
-    forAll(pairs, k)
-    {
-        ++csrStart_[pairs[k].first() + 1];
-        ++csrStart_[pairs[k].second() + 1];
-    }
-    for (label p = 0; p < n; ++p)
-    {
-        csrStart_[p + 1] += csrStart_[p];
-    }
-
-    csrCode_.setSize(2*np);
-    {
-        labelList fill(SubList<label>(csrStart_, n));
-        forAll(pairs, k)
-        {
-            csrCode_[fill[pairs[k].first()]++] = 2*k;
-            csrCode_[fill[pairs[k].second()]++] = 2*k + 1;
-        }
-    }
-
-    auto partnerId = [&](const label code)
-    {
-        const labelPair& pr = pairs[code/2];
-        return s.globalId[(code % 2) ? pr.first() : pr.second()];
-    };
-
-    for (label p = 0; p < n; ++p)
-    {
-        std::sort
-        (
-            csrCode_.begin() + csrStart_[p],
-            csrCode_.begin() + csrStart_[p + 1],
-            [&](const label a, const label b)
-            {
-                return partnerId(a) < partnerId(b);
-            }
-        );
-    }
-
     timeNeighbour_ += wallClock() - t0;
 }
 
 
 void Foam::demEngine::pairForces(const demState& s, const bool advance)
 {
-    const DynamicList<labelPair>& pairs = search_.pairs();
     const bool cohesive = cohesion_->active();
     const bool rolls = rolling_->active();
     const bool damping = normal_->tangentialDamping();
     const bool rollScaled = rolling_->scaledWithN();
-
-    scalar rMax = 0;
-    for (const scalar r : s.r)
-    {
-        rMax = max(rMax, r);
-    }
-    const scalar maxRange = cohesion_->maxRange(rMax);
+    const label nOwned = s.owned();
 
     demContact c;
     c.wall = false;
@@ -518,101 +547,124 @@ void Foam::demEngine::pairForces(const demState& s, const bool advance)
     // only when advancing
     c.dt = timeStep_;
 
-    forAll(pairs, k)
+    // A force is added to both rows as soon as it is known, in the order of
+    // the half list, i.e. to each row in its partners' globalId order.
+    // Pairs out of range add nothing: adding zeros would not change a sum
+    // (which is never -0, starting from +0), so skipping them changes no bit
+    // The partners' positions are read in no spatial order (the rows are
+    // in the cloud's order): ask for them a few pairs ahead
+    const label np = pairJ_.size();
+    const label ahead = 16;
+
+    forAll(pairRow_, a)
     {
-        const label i = pairs[k].first();
-        const label j = pairs[k].second();
+        const label i = pairRow_[a];
+        const point xi0 = s.x[i];
 
-        pairF_[k] = Zero;
-        pairTi_[k] = Zero;
-        pairTj_[k] = Zero;
-
-        const vector d(s.x[i] - s.x[j]);
-        const scalar rSum = s.r[i] + s.r[j];
-        const scalar r2 = magSqr(d);
-
-        if (r2 >= sqr(rSum + maxRange))
+        for (label k = pairStart_[a]; k < pairStart_[a + 1]; ++k)
         {
+            if (k + ahead < np)
+            {
+                __builtin_prefetch(&s.x[pairJ_[k + ahead]]);
+            }
+
+            const label j = pairJ_[k];
+
+            const vector d(xi0 - s.x[j]);
+            const scalar r2 = magSqr(d);
+
+            if (r2 >= pairCut2_[k])
+            {
+                if (advance && pairHasXi_[k])
+                {
+                    pairXi_[k] = Zero;
+                    pairHasXi_[k] = false;
+                }
+                continue;
+            }
+
+            const scalar rSum = s.r[i] + s.r[j];
+            const scalar r = sqrt(r2);
+            c.n = d/r;
+            c.delta = rSum - r;
+            c.props = &materials_.pair(s.typeId[i], s.typeId[j]);
+            c.typei = s.typeId[i];
+            c.typej = s.typeId[j];
+            c.ri = s.r[i];
+            c.rj = s.r[j];
+            c.Rstar = s.r[i]*s.r[j]/rSum;
+            c.mstar = s.m[i]*s.m[j]/(s.m[i] + s.m[j]);
+
+            const scalar S = pairScaling::pair(s.N[i], s.N[j]);
+
+            if (!c.touching())
+            {
+                if (advance && pairHasXi_[k])
+                {
+                    pairXi_[k] = Zero;
+                    pairHasXi_[k] = false;
+                }
+                if (cohesive && -c.delta < cohesion_->range(c))
+                {
+                    const vector F((-S*cohesion_->force(c))*c.n);
+                    fContact_[i] += F;
+                    fContact_[j] -= F;
+                }
+                continue;
+            }
+
+            c.ci = s.r[i] - 0.5*c.delta;
+            c.cj = s.r[j] - 0.5*c.delta;
+            const vector vr(s.v[i] - s.v[j]);
+            c.vn = vr & c.n;
+            c.vs =
+                (vr - c.vn*c.n) - ((c.ci*s.omega[i] + c.cj*s.omega[j]) ^ c.n);
+            c.omegaRel = s.omega[i] - s.omega[j];
+
+            // Normal, cohesion, tangential, rolling (theory 1.6)
+            scalar fElastic = 0;
+            const scalar fn = normal_->force(c, fElastic);
+            vector F(fn*c.n);
+
+            if (cohesive)
+            {
+                F -= cohesion_->force(c)*c.n;
+            }
+
+            vector xi(pairXi_[k]);
+            const vector Ft(tangential_->force(c, fn, damping, xi));
             if (advance)
             {
-                pairXi_[k] = Zero;
+                pairXi_[k] = xi;
+                pairHasXi_[k] = true;
             }
-            continue;
-        }
+            F += Ft;
 
-        const scalar r = sqrt(r2);
-        c.n = d/r;
-        c.delta = rSum - r;
-        c.props = &materials_.pair(s.typeId[i], s.typeId[j]);
-        c.typei = s.typeId[i];
-        c.typej = s.typeId[j];
-        c.ri = s.r[i];
-        c.rj = s.r[j];
-        c.Rstar = s.r[i]*s.r[j]/rSum;
-        c.mstar = s.m[i]*s.m[j]/(s.m[i] + s.m[j]);
+            const vector Fk(S*F);
+            vector Ti(S*(-c.ci*(c.n ^ Ft)));
+            vector Tj(S*(-c.cj*(c.n ^ Ft)));
 
-        const scalar S = pairScaling::pair(s.N[i], s.N[j]);
-
-        if (!c.touching())
-        {
-            if (advance)
+            if (rolls)
             {
-                pairXi_[k] = Zero;
+                const vector M(rolling_->torque(c, fElastic));
+                const scalar Sr = pairScaling::torqueFactor(S, rollScaled);
+                Ti += Sr*M;
+                Tj -= Sr*M;
             }
-            if (cohesive && -c.delta < cohesion_->range(c))
+
+            fContact_[i] += Fk;
+            tContact_[i] += Ti;
+            fContact_[j] -= Fk;
+            tContact_[j] += Tj;
+
+            // Each pair counted once over all processors: where the row of
+            // the smaller globalId (i) is owned
+            if (i < nOwned)
             {
-                pairF_[k] = (-S*cohesion_->force(c))*c.n;
+                ++diag_.nPairContacts;
+                diag_.maxOverlapRatio =
+                    max(diag_.maxOverlapRatio, c.delta/c.Rstar);
             }
-            continue;
-        }
-
-        c.ci = s.r[i] - 0.5*c.delta;
-        c.cj = s.r[j] - 0.5*c.delta;
-        const vector vr(s.v[i] - s.v[j]);
-        c.vn = vr & c.n;
-        c.vs = (vr - c.vn*c.n) - ((c.ci*s.omega[i] + c.cj*s.omega[j]) ^ c.n);
-        c.omegaRel = s.omega[i] - s.omega[j];
-
-        // Normal, cohesion, tangential, rolling (theory 1.6)
-        scalar fElastic = 0;
-        const scalar fn = normal_->force(c, fElastic);
-        vector F(fn*c.n);
-
-        if (cohesive)
-        {
-            F -= cohesion_->force(c)*c.n;
-        }
-
-        vector xi(pairXi_[k]);
-        const vector Ft(tangential_->force(c, fn, damping, xi));
-        if (advance)
-        {
-            pairXi_[k] = xi;
-        }
-        F += Ft;
-
-        vector Ti(-c.ci*(c.n ^ Ft));
-        vector Tj(-c.cj*(c.n ^ Ft));
-
-        pairF_[k] = S*F;
-        pairTi_[k] = S*Ti;
-        pairTj_[k] = S*Tj;
-
-        if (rolls)
-        {
-            const vector M(rolling_->torque(c, fElastic));
-            const scalar Sr = pairScaling::torqueFactor(S, rollScaled);
-            pairTi_[k] += Sr*M;
-            pairTj_[k] -= Sr*M;
-        }
-
-        // Each pair counted once over all processors: where the row of the
-        // smaller globalId (first) is owned
-        if (i < s.owned())
-        {
-            ++diag_.nPairContacts;
-            diag_.maxOverlapRatio =
-                max(diag_.maxOverlapRatio, c.delta/c.Rstar);
         }
     }
 }
@@ -633,13 +685,50 @@ void Foam::demEngine::wallForces
         return;
     }
 
+    const scalar rp = s.r[p];
+    const scalar reach = rp + cohesion_->maxRange(rp);
+    const label nWalls = walls_.size();
+
+    DynamicList<wallContactState>& old = wallState_[p];
+
+    // The contacts of all walls first: most rows near a wall touch none
+    // and need nothing more
+    wallBuf_.clear();
+    wallBufWall_.clear();
+    forAll(walls_, w)
+    {
+        const label first = wallCandStart_[p*nWalls + w];
+        const label nCand = wallCandStart_[p*nWalls + w + 1] - first;
+        if (nCand)
+        {
+            walls_[w].findContacts
+            (
+                s.x[p],
+                reach,
+                SubList<label>(wallCand_, nCand, first),
+                wallBuf_
+            );
+            while (wallBufWall_.size() < wallBuf_.size())
+            {
+                wallBufWall_.append(w);
+            }
+        }
+    }
+
+    if (wallBuf_.empty())
+    {
+        if (advance)
+        {
+            old.clear();
+        }
+        return;
+    }
+
     const bool cohesive = cohesion_->active();
     const bool rolls = rolling_->active();
     const bool damping = normal_->tangentialDamping();
     const bool rollScaled = rolling_->scaledWithN();
 
-    const scalar rp = s.r[p];
-    const scalar reach = rp + cohesion_->maxRange(rp);
     const scalar S = pairScaling::wall(s.N[p]);
 
     demContact c;
@@ -656,116 +745,111 @@ void Foam::demEngine::wallForces
     c.cj = 0;
     c.omegaRel = s.omega[p];
 
-    DynamicList<wallContactState>& old = wallState_[p];
-
-    forAll(walls_, w)
+    forAll(wallBuf_, b)
     {
-        wallBuf_.clear();
-        walls_[w].findContacts(s.x[p], reach, wallBuf_);
+        const demWallContact& wc = wallBuf_[b];
+        const label w = wallBufWall_[b];
 
-        for (const demWallContact& wc : wallBuf_)
+        c.n = wc.n;
+        c.delta = rp - wc.distance;
+        c.props = &materials_.pair(s.typeId[p], wallMaterial_[w]);
+        c.typej = wallMaterial_[w];
+
+        wallContribution contrib;
+        contrib.partnerKey = wallPartnerKey(w, wc.key);
+        contrib.f = Zero;
+        contrib.t = Zero;
+
+        if (!c.touching())
         {
-            c.n = wc.n;
-            c.delta = rp - wc.distance;
-            c.props = &materials_.pair(s.typeId[p], wallMaterial_[w]);
-            c.typej = wallMaterial_[w];
-
-            wallContribution contrib;
-            contrib.partnerKey = wallPartnerKey(w, wc.key);
-            contrib.f = Zero;
-            contrib.t = Zero;
-
-            if (!c.touching())
+            if (cohesive && -c.delta < cohesion_->range(c))
             {
-                if (cohesive && -c.delta < cohesion_->range(c))
-                {
-                    contrib.f = (-S*cohesion_->force(c))*c.n;
-                    wallContrib_.append(contrib);
-                }
-                continue;
+                contrib.f = (-S*cohesion_->force(c))*c.n;
+                wallContrib_.append(contrib);
             }
+            continue;
+        }
 
-            c.ci = rp - 0.5*c.delta;
-            c.vn = s.v[p] & c.n;
-            c.vs = (s.v[p] - c.vn*c.n) - ((c.ci*s.omega[p]) ^ c.n);
+        c.ci = rp - 0.5*c.delta;
+        c.vn = s.v[p] & c.n;
+        c.vs = (s.v[p] - c.vn*c.n) - ((c.ci*s.omega[p]) ^ c.n);
 
-            // The contact's history: same key, else a contact of the same
-            // wall that just moved to a neighbouring triangle (normals
-            // nearly parallel), else a new contact
-            vector xi(Zero);
-            label match = -1;
+        // The contact's history: same key, else a contact of the same
+        // wall that just moved to a neighbouring triangle (normals
+        // nearly parallel), else a new contact
+        vector xi(Zero);
+        label match = -1;
+        forAll(old, o)
+        {
+            if (old[o].wall == w && old[o].key == wc.key)
+            {
+                match = o;
+                break;
+            }
+        }
+        if (match < 0)
+        {
+            scalar best = 0.9;
             forAll(old, o)
             {
-                if (old[o].wall == w && old[o].key == wc.key)
+                if (old[o].wall == w && (old[o].n & c.n) > best)
                 {
-                    match = o;
-                    break;
-                }
-            }
-            if (match < 0)
-            {
-                scalar best = 0.9;
-                forAll(old, o)
-                {
-                    if (old[o].wall == w && (old[o].n & c.n) > best)
+                    bool taken = false;
+                    for (const wallContactState& nw : wallNew_)
                     {
-                        bool taken = false;
-                        for (const wallContactState& nw : wallNew_)
-                        {
-                            taken = taken
-                             || (nw.wall == w && nw.key == old[o].key);
-                        }
-                        if (!taken)
-                        {
-                            best = old[o].n & c.n;
-                            match = o;
-                        }
+                        taken = taken
+                         || (nw.wall == w && nw.key == old[o].key);
+                    }
+                    if (!taken)
+                    {
+                        best = old[o].n & c.n;
+                        match = o;
                     }
                 }
             }
-            if (match >= 0)
-            {
-                xi = old[match].xi;
-            }
+        }
+        if (match >= 0)
+        {
+            xi = old[match].xi;
+        }
 
-            scalar fElastic = 0;
-            const scalar fn = normal_->force(c, fElastic);
-            vector F(fn*c.n);
-            if (cohesive)
-            {
-                F -= cohesion_->force(c)*c.n;
-            }
+        scalar fElastic = 0;
+        const scalar fn = normal_->force(c, fElastic);
+        vector F(fn*c.n);
+        if (cohesive)
+        {
+            F -= cohesion_->force(c)*c.n;
+        }
 
-            const vector Ft(tangential_->force(c, fn, damping, xi));
-            F += Ft;
+        const vector Ft(tangential_->force(c, fn, damping, xi));
+        F += Ft;
 
-            contrib.f = S*F;
-            contrib.t = S*(-c.ci*(c.n ^ Ft));
+        contrib.f = S*F;
+        contrib.t = S*(-c.ci*(c.n ^ Ft));
 
-            if (rolls)
-            {
-                contrib.t +=
-                    pairScaling::torqueFactor(S, rollScaled)
-                   *rolling_->torque(c, fElastic);
-            }
+        if (rolls)
+        {
+            contrib.t +=
+                pairScaling::torqueFactor(S, rollScaled)
+               *rolling_->torque(c, fElastic);
+        }
 
-            wallContrib_.append(contrib);
+        wallContrib_.append(contrib);
 
-            if (advance)
-            {
-                wallContactState st;
-                st.wall = w;
-                st.key = wc.key;
-                st.n = c.n;
-                st.xi = xi;
-                wallNew_.append(st);
-            }
+        if (advance)
+        {
+            wallContactState st;
+            st.wall = w;
+            st.key = wc.key;
+            st.n = c.n;
+            st.xi = xi;
+            wallNew_.append(st);
+        }
 
-            if (p < s.owned())
-            {
-                ++diag_.nWallContacts;
-                diag_.maxOverlapRatio = max(diag_.maxOverlapRatio, c.delta/rp);
-            }
+        if (p < s.owned())
+        {
+            ++diag_.nWallContacts;
+            diag_.maxOverlapRatio = max(diag_.maxOverlapRatio, c.delta/rp);
         }
     }
 
@@ -786,58 +870,44 @@ void Foam::demEngine::wallForces
 }
 
 
-void Foam::demEngine::evaluate(demState& s, const bool advance)
+void Foam::demEngine::evaluate
+(
+    demState& s,
+    const bool advance,
+    const label checkedRows
+)
 {
     const label n = s.size();
 
-    if (!workingValid_ || search_.needsRebuild(s))
+    double t0 = wallClock();
+
+    if (!workingValid_ || search_.needsRebuild(s, checkedRows))
     {
         rebuild(s);
+    }
+    else
+    {
+        timeNeighbour_ += wallClock() - t0;
     }
 
     diag_.nPairContacts = 0;
     diag_.nWallContacts = 0;
     diag_.maxOverlapRatio = 0;
 
-    double t0 = wallClock();
-
-    pairForces(s, advance);
+    t0 = wallClock();
 
     fContact_.setSize(n);
     tContact_.setSize(n);
+    fContact_ = Zero;
+    tContact_ = Zero;
 
-    for (label p = 0; p < n; ++p)
-    {
-        vector f(Zero);
-        vector t(Zero);
-        for (label e = csrStart_[p]; e < csrStart_[p + 1]; ++e)
-        {
-            const label code = csrCode_[e];
-            const label k = code/2;
-            if (code % 2)
-            {
-                f -= pairF_[k];
-                t += pairTj_[k];
-            }
-            else
-            {
-                f += pairF_[k];
-                t += pairTi_[k];
-            }
-        }
-        fContact_[p] = f;
-        tContact_[p] = t;
-    }
+    pairForces(s, advance);
 
     double t1 = wallClock();
     timePair_ += t1 - t0;
 
-    for (label p = 0; p < n; ++p)
+    for (const label p : nearWall_)
     {
-        if (!nearWall_[p])
-        {
-            continue;
-        }
         wallForces(s, p, advance);
         for (const wallContribution& wc : wallContrib_)
         {
@@ -847,8 +917,6 @@ void Foam::demEngine::evaluate(demState& s, const bool advance)
     }
 
     timeWall_ += wallClock() - t1;
-
-    totalForces(s);
 }
 
 
@@ -1052,19 +1120,62 @@ void Foam::demEngine::evolve
     else
     {
         evaluate(s, false);
+        totalForces(s);
     }
+
+    // Per owned row, the half-step factors dt/(2M), dt/(2I), evaluated once
+    // per evolve instead of twice per sub-step (two divisions each), by the
+    // same expressions so the update is unchanged to the bit
+    double tc = wallClock();
+
+    halfStepV_.setSize(n);
+    halfStepOmega_.setSize(n);
+    for (label p = 0; p < n; ++p)
+    {
+        const scalar M = s.N[p]*s.m[p];
+        const scalar I = 0.4*M*sqr(s.r[p]);
+        halfStepV_[p] = 0.5*dt/M;
+        halfStepOmega_[p] = 0.5*dt/I;
+    }
+
+    timeIntegrate_ += wallClock() - tc;
 
     for (label step = 0; step < nSub; ++step)
     {
-        double tc = wallClock();
+        tc = wallClock();
 
-        for (label p = 0; p < n; ++p)
+        // Values just stored are not read back (a store read back by a
+        // wider load stalls the pipeline).
+        // After the first sub-step (which checks everything: the cloud may
+        // have changed the rows) the owned rows are the particles of the
+        // neighbour list's build, and their move since the build is
+        // measured here, saving a pass over the rows in needsRebuild
+        const List<point>& x0 = search_.x0();
+        const bool track =
+            step > 0 && search_.valid() && x0.size() == s.size();
+        scalar maxMove2 = 0;
+
+        if (track)
         {
-            const scalar M = s.N[p]*s.m[p];
-            const scalar I = 0.4*M*sqr(s.r[p]);
-            s.v[p] += (0.5*dt/M)*s.f[p];
-            s.omega[p] += (0.5*dt/I)*s.torque[p];
-            s.x[p] += dt*s.v[p];
+            for (label p = 0; p < n; ++p)
+            {
+                const vector v(s.v[p] + halfStepV_[p]*s.f[p]);
+                s.v[p] = v;
+                s.omega[p] += halfStepOmega_[p]*s.torque[p];
+                const point x(s.x[p] + dt*v);
+                s.x[p] = x;
+                maxMove2 = max(maxMove2, magSqr(x - x0[p]));
+            }
+        }
+        else
+        {
+            for (label p = 0; p < n; ++p)
+            {
+                const vector v(s.v[p] + halfStepV_[p]*s.f[p]);
+                s.v[p] = v;
+                s.omega[p] += halfStepOmega_[p]*s.torque[p];
+                s.x[p] += dt*v;
+            }
         }
 
         timeIntegrate_ += wallClock() - tc;
@@ -1074,19 +1185,35 @@ void Foam::demEngine::evolve
             halo_->update(s);
         }
 
-        evaluate(s, true);
+        // As neighbourSearch::needsRebuild decides
+        const bool ownedChecked =
+            track && !(maxMove2 > sqr(0.5*search_.skin()));
+
+        evaluate(s, true, ownedChecked ? n : 0);
 
         tc = wallClock();
 
+        // Total forces (as totalForces) and the second half kick in one
+        // pass over the rows
         scalar Ek = 0, Er = 0;
         for (label p = 0; p < n; ++p)
         {
             const scalar M = s.N[p]*s.m[p];
-            const scalar I = 0.4*M*sqr(s.r[p]);
-            s.v[p] += (0.5*dt/M)*s.f[p];
-            s.omega[p] += (0.5*dt/I)*s.torque[p];
-            Ek += 0.5*M*magSqr(s.v[p]);
-            Er += 0.5*I*magSqr(s.omega[p]);
+            const vector f(fContact_[p] + M*g_ + s.fExt[p]);
+            const vector t(tContact_[p]);
+            s.f[p] = f;
+            s.torque[p] = t;
+            const vector v(s.v[p] + halfStepV_[p]*f);
+            const vector omega(s.omega[p] + halfStepOmega_[p]*t);
+            s.v[p] = v;
+            s.omega[p] = omega;
+            Ek += 0.5*M*magSqr(v);
+            Er += 0.5*(0.4*M*sqr(s.r[p]))*magSqr(omega);
+        }
+        for (label p = n; p < s.size(); ++p)
+        {
+            s.f[p] = fContact_[p] + (s.N[p]*s.m[p])*g_ + s.fExt[p];
+            s.torque[p] = tContact_[p];
         }
 
         timeIntegrate_ += wallClock() - tc;
@@ -1128,6 +1255,7 @@ void Foam::demEngine::evaluateForces(demState& s)
 {
     checkState(s);
     evaluate(s, true);
+    totalForces(s);
     cacheValid_ = false;
 }
 

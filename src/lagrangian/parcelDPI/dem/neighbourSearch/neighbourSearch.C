@@ -51,7 +51,6 @@ struct level
 Foam::neighbourSearch::neighbourSearch(const scalar skin)
 :
     skin_(skin),
-    range_(0),
     nLevels_(0),
     nBuilds_(0),
     valid_(false)
@@ -60,7 +59,11 @@ Foam::neighbourSearch::neighbourSearch(const scalar skin)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-bool Foam::neighbourSearch::needsRebuild(const demState& s) const
+bool Foam::neighbourSearch::needsRebuild
+(
+    const demState& s,
+    const label firstRow
+) const
 {
     if (!valid_ || s.size() != x0_.size())
     {
@@ -69,7 +72,7 @@ bool Foam::neighbourSearch::needsRebuild(const demState& s) const
 
     const scalar maxMove2 = sqr(0.5*skin_);
 
-    forAll(x0_, i)
+    for (label i = firstRow; i < x0_.size(); ++i)
     {
         if
         (
@@ -94,11 +97,20 @@ void Foam::neighbourSearch::clear()
 
 void Foam::neighbourSearch::build(const demState& s, const scalar range)
 {
+    build(s, [range](const scalar, const scalar) { return range; });
+}
+
+
+void Foam::neighbourSearch::build
+(
+    const demState& s,
+    const std::function<scalar(scalar, scalar)>& range
+)
+{
     const label n = s.size();
 
     x0_ = s.x;
     id0_ = s.globalId;
-    range_ = range;
     pairs_.clear();
     valid_ = true;
     ++nBuilds_;
@@ -136,9 +148,11 @@ void Foam::neighbourSearch::build(const demState& s, const scalar range)
         lo = min(lo, p);
     }
 
+    // A pair within reach has its smaller particle in this level or a finer
+    // one, so its reach is at most that of two of this level's largest
     for (level& lev : levels)
     {
-        lev.h = 2*lev.rMax + range + skin_;
+        lev.h = 2*lev.rMax + range(lev.rMax, lev.rMax) + skin_;
     }
 
     auto cellOf = [&](const point& p, const scalar h, label ijk[3])
@@ -227,7 +241,8 @@ void Foam::neighbourSearch::build(const demState& s, const scalar range)
                                 continue;
                             }
 
-                            const scalar cut = rp + s.r[q] + range + skin_;
+                            const scalar cut =
+                                rp + s.r[q] + range(rp, s.r[q]) + skin_;
                             if (magSqr(xp - s.x[q]) < sqr(cut))
                             {
                                 if (s.globalId[p] < s.globalId[q])

@@ -52,4 +52,34 @@ Foam::autoPtr<Foam::demWall> Foam::demWall::New
 }
 
 
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::demWall::findCandidates
+(
+    const point& x,
+    const scalar reach,
+    DynamicList<label>& elements
+) const
+{
+    DynamicList<demWallContact> contacts;
+    findContacts(x, reach, contacts);
+    if (contacts.size())
+    {
+        elements.append(0);
+    }
+}
+
+
+void Foam::demWall::findContacts
+(
+    const point& x,
+    const scalar reach,
+    const labelUList&,
+    DynamicList<demWallContact>& contacts
+) const
+{
+    findContacts(x, reach, contacts);
+}
+
+
 // ************************************************************************* //

@@ -90,6 +90,20 @@ Foam::demWalls::triangleWall::triangleWall
     reach_(-1)
 {
     checkTriangles(dict);
+
+    planes_.setSize(tris_.size());
+    forAll(tris_, t)
+    {
+        const triFace& f = tris_[t];
+        const vector nf
+        (
+            (points_[f[1]] - points_[f[0]]) ^ (points_[f[2]] - points_[f[0]])
+        );
+        const scalar magNf = mag(nf);
+        planes_[t].a = points_[f[0]];
+        planes_[t].n = (magNf > VSMALL) ? nf/magNf : vector::zero;
+        planes_[t].tol = 0;     // set by prepare
+    }
 }
 
 
@@ -205,6 +219,24 @@ void Foam::demWalls::triangleWall::prepare(const scalar reach)
         nCells_[d] = label((hi[d] - lo[d])/cellSize_) + 1;
     }
 
+    // Round-off of a plane distance is ~1e-16 of the distance from the
+    // triangle's first vertex, which for a sphere that can be tested is
+    // below the triangle's size plus two cells; 1e-12 of that is ample
+    forAll(tris_, t)
+    {
+        const triFace& f = tris_[t];
+        const scalar size = max
+        (
+            max
+            (
+                mag(points_[f[1]] - points_[f[0]]),
+                mag(points_[f[2]] - points_[f[1]])
+            ),
+            mag(points_[f[0]] - points_[f[2]])
+        );
+        planes_[t].tol = 1e-12*(size + 2*cellSize_ + reach);
+    }
+
     const scalar halfDiag = 0.5*sqrt(3.0)*cellSize_;
 
     forAll(tris_, t)
@@ -253,6 +285,30 @@ void Foam::demWalls::triangleWall::prepare(const scalar reach)
 }
 
 
+const std::vector<Foam::label>*
+Foam::demWalls::triangleWall::cellOf(const point& x) const
+{
+    label ijk[3];
+    for (direction d = 0; d < 3; ++d)
+    {
+        const scalar s = (x[d] - origin_[d])/cellSize_;
+        if (s < 0 || s >= nCells_[d])
+        {
+            return nullptr;
+        }
+        ijk[d] = label(s);
+    }
+
+    const auto iter = cells_.find(cellKey(ijk[0], ijk[1], ijk[2]));
+    if (iter == cells_.end())
+    {
+        return nullptr;
+    }
+
+    return &iter->second;
+}
+
+
 void Foam::demWalls::triangleWall::findContacts
 (
     const point& x,
@@ -267,27 +323,99 @@ void Foam::demWalls::triangleWall::findContacts
             << " m but is asked for " << reach << " m" << abort(FatalError);
     }
 
-    label ijk[3];
-    for (direction d = 0; d < 3; ++d)
+    const std::vector<label>* cell = cellOf(x);
+    if (cell && cell->size())
     {
-        const scalar s = (x[d] - origin_[d])/cellSize_;
-        if (s < 0 || s >= nCells_[d])
-        {
-            return;
-        }
-        ijk[d] = label(s);
+        contactsOf
+        (
+            x, reach, cell->data(), cell->data() + cell->size(), contacts
+        );
+    }
+}
+
+
+void Foam::demWalls::triangleWall::findCandidates
+(
+    const point& x,
+    const scalar reach,
+    DynamicList<label>& elements
+) const
+{
+    if (reach > reach_)
+    {
+        FatalErrorInFunction
+            << "Wall " << name() << " was prepared for a reach of " << reach_
+            << " m but is asked for " << reach << " m" << abort(FatalError);
     }
 
-    const auto iter = cells_.find(cellKey(ijk[0], ijk[1], ijk[2]));
-    if (iter == cells_.end())
+    const std::vector<label>* cell = cellOf(x);
+    if (!cell)
     {
         return;
     }
 
+    for (const label t : *cell)
+    {
+        if (outOfReach(t, x, reach))
+        {
+            continue;
+        }
+        const triFace& f = tris_[t];
+        feature where;
+        label e;
+        const point q = closestPoint
+        (
+            x, points_[f[0]], points_[f[1]], points_[f[2]], where, e
+        );
+        if (mag(x - q) < reach)
+        {
+            elements.append(t);
+        }
+    }
+}
+
+
+void Foam::demWalls::triangleWall::findContacts
+(
+    const point& x,
+    const scalar reach,
+    const labelUList& elements,
+    DynamicList<demWallContact>& contacts
+) const
+{
+    if (elements.size())
+    {
+        contactsOf
+        (
+            x, reach, elements.cdata(), elements.cdata() + elements.size(),
+            contacts
+        );
+    }
+}
+
+
+void Foam::demWalls::triangleWall::contactsOf
+(
+    const point& x,
+    const scalar reach,
+    const label* first,
+    const label* last,
+    DynamicList<demWallContact>& contacts
+) const
+{
     work_.clear();
 
-    for (const label t : iter->second)
+    for (const label* tp = first; tp != last; ++tp)
     {
+        const label t = *tp;
+
+        // Most triangles of a cell, or of a candidate list, are out of
+        // reach: their plane is
+        if (outOfReach(t, x, reach))
+        {
+            continue;
+        }
+
         const triFace& f = tris_[t];
         feature where;
         label e;
