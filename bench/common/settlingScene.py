@@ -13,10 +13,16 @@ particles placed apart into contact in that time, the random velocities
 Writers:
     dpi <dir>       a dpiFoam DEM-only case (fluid none)
     liggghts <dir>  the same scene for stock LIGGGHTS 3.8 (hertz/history)
+    openfoam <dir>  the same scene for OpenFOAM's own colliding cloud
+                    (icoUncoupledKinematicParcelFoam, pairSpringSliderDashpot
+                    and wallLocalSpringSliderDashpot, frozen gas at rest,
+                    no drag); the velocities go to <dir>/velocities.txt
+                    and are set after a first step by openfoamSetU.py
 
 Usage:
     settlingScene.py dpi <dir> --n 2000 --steps 4000 [--fluid-every 1000]
     settlingScene.py liggghts <dir> --n 2000 --steps 4000
+    settlingScene.py openfoam <dir> --n 2000 --steps 4000 [--of-cell 2]
 Common options: --phi 0.15 --vrms 0.5 --seed 20240 --dt 1e-8
                 --order random|morton (list order, same particles)
 """
@@ -385,10 +391,190 @@ run             ${nsteps}
            steps=args.steps))
 
 
+def tsujiAlpha(e):
+    """OpenFOAM's pairSpringSliderDashpot damping eta = alpha sqrt(M kN)
+    delta^(1/4) with kN = (4/3) E* sqrt(R) is LIGGGHTS' Hertz dashpot
+    gamma_n = -2 sqrt(5/6) beta sqrt(S_n m*), S_n = 2 E* sqrt(R delta),
+    when alpha = -sqrt(5) beta (theory 1.3): same restitution."""
+    beta = math.log(e)/math.sqrt(math.log(e)**2 + math.pi**2)
+    return -math.sqrt(5.0)*beta
+
+
+def writeOpenfoam(case, x, v, L, args):
+    """The same scene for OpenFOAM v1912's colliding kinematic cloud:
+    icoUncoupledKinematicParcelFoam (the gas is a frozen field at rest, no
+    drag force: only gravity and collisions), manualInjection of the
+    positions at t = 0 (U 0), Hertz pairSpringSliderDashpot (b 1.5) with
+    alpha from the restitution, the same E, nu, mu for particles and walls,
+    deltaT = the DEM step with one collision sub-cycle. The per-particle
+    velocities are written to velocities.txt (in injection order = origId)
+    and set after the first step (openfoamSetU.py)."""
+    for sub in ("system", "constant", "0"):
+        os.makedirs(os.path.join(case, sub), exist_ok=True)
+    n = len(x)
+    dt = args.dt
+    alpha = tsujiAlpha(RESTITUTION)
+    # OpenFOAM's pair search visits the particles of the neighbouring cells
+    # within maxInteractionDistance: its cost grows with the particles per
+    # cell, so its mesh is finer than dpiFoam's (--of-cell diameters)
+    nCells = max(2, int(round(L/(args.of_cell*DIAMETER))))
+    with open(os.path.join(case, "system/blockMeshDict"), "w") as f:
+        f.write(header("dictionary", "blockMeshDict"))
+        f.write("scale %.12g;\n" % L)
+        f.write("vertices\n(\n    (0 0 0) (1 0 0) (1 1 0) (0 1 0)\n"
+                "    (0 0 1) (1 0 1) (1 1 1) (0 1 1)\n);\n")
+        f.write("blocks\n(\n    hex (0 1 2 3 4 5 6 7) (%d %d %d) "
+                "simpleGrading (1 1 1)\n);\n" % (nCells, nCells, nCells))
+        f.write("boundary\n(\n    walls\n    {\n        type wall;\n"
+                "        faces\n        (\n"
+                "            (0 4 7 3) (2 6 5 1) (1 5 4 0)\n"
+                "            (0 3 2 1) (4 5 6 7) (3 7 6 2)\n"
+                "        );\n    }\n);\n")
+    # One first step (t = dt: injection), then the run proper from dt
+    with open(os.path.join(case, "system/controlDict"), "w") as f:
+        f.write(header("dictionary", "controlDict"))
+        f.write("application     icoUncoupledKinematicParcelFoam;\n"
+                "startFrom       latestTime;\nstartTime       0;\n"
+                "stopAt          endTime;\n")
+        f.write("endTime         %.12g;\n" % ((args.steps + 1)*dt))
+        f.write("deltaT          %.12g;\n" % dt)
+        f.write("writeControl    timeStep;\nwriteInterval   1000000000;\n"
+                "purgeWrite      0;\nwriteFormat     ascii;\n"
+                "writePrecision  17;\nwriteCompression off;\n"
+                "timeFormat      general;\ntimePrecision   12;\n"
+                "runTimeModifiable false;\n")
+    with open(os.path.join(case, "system/fvSchemes"), "w") as f:
+        f.write(header("dictionary", "fvSchemes"))
+        f.write("ddtSchemes { default none; }\ngradSchemes { default none; }\n"
+                "divSchemes { default none; }\n"
+                "laplacianSchemes { default none; }\n"
+                "interpolationSchemes { default linear; }\n")
+    with open(os.path.join(case, "system/fvSolution"), "w") as f:
+        f.write(header("dictionary", "fvSolution"))
+        f.write("solvers {}\n")
+    with open(os.path.join(case, "system/decomposeParDict"), "w") as f:
+        f.write(header("dictionary", "decomposeParDict"))
+        f.write("numberOfSubdomains 2;\nmethod simple;\n"
+                "coeffs { n (2 1 1); }\n")
+    with open(os.path.join(case, "constant/g"), "w") as f:
+        f.write(header("uniformDimensionedVectorField", "g"))
+        f.write("dimensions      [0 1 -2 0 0 0 0];\n"
+                "value           (0 0 %g);\n" % -GRAVITY)
+    with open(os.path.join(case, "constant/transportProperties"), "w") as f:
+        f.write(header("dictionary", "transportProperties"))
+        f.write("rhoInf 1.2;\ntransportModel Newtonian;\nnu 1.5e-05;\n")
+    with open(os.path.join(case, "constant/turbulenceProperties"), "w") as f:
+        f.write(header("dictionary", "turbulenceProperties"))
+        f.write("simulationType laminar;\n")
+    with open(os.path.join(case, "0/U"), "w") as f:
+        f.write(header("volVectorField", "U"))
+        f.write("dimensions [0 1 -1 0 0 0 0];\ninternalField uniform (0 0 0);\n"
+                "boundaryField { walls { type noSlip; } }\n")
+    with open(os.path.join(case, "constant/kinematicCloudPositions"),
+              "w") as f:
+        f.write(header("vectorField", "kinematicCloudPositions"))
+        f.write("%d\n(\n" % n)
+        for p in x:
+            f.write("(%.10e %.10e %.10e)\n" % (p[0], p[1], p[2]))
+        f.write(")\n")
+    np.savetxt(os.path.join(case, "velocities.txt"), v, fmt="%.10e",
+               header="initial velocities in injection order (origId)")
+
+    wall = ("youngsModulus %(E)g; poissonsRatio %(nu)g; alpha %(a).8g; "
+            "b 1.5; mu %(mu)g; cohesionEnergyDensity 0;"
+            % dict(E=YOUNG, nu=POISSON, a=alpha, mu=FRICTION))
+    with open(os.path.join(case, "constant/kinematicCloudProperties"),
+              "w") as f:
+        f.write(header("dictionary", "kinematicCloudProperties"))
+        f.write("""// settlingCarriers in OpenFOAM's colliding cloud
+// (bench/common/settlingScene.py); alpha = -sqrt(5) beta(e = %(e)g)
+solution
+{
+    active          true;
+    coupled         false;
+    transient       yes;
+    cellValueSourceCorrection off;
+    maxCo           1;
+    interpolationSchemes { rho cell; U cell; mu cell; }
+    integrationSchemes { U Euler; }
+}
+
+constantProperties
+{
+    rho0            %(rho)g;
+    youngsModulus   %(E)g;
+    poissonsRatio   %(nu)g;
+}
+
+subModels
+{
+    particleForces
+    {
+        gravity;
+    }
+
+    injectionModels
+    {
+        carriers
+        {
+            type            manualInjection;
+            massTotal       0;
+            parcelBasisType fixed;
+            nParticle       1;
+            SOI             0;
+            positionsFile   "kinematicCloudPositions";
+            U0              (0 0 0);
+            sizeDistribution
+            {
+                type        fixedValue;
+                fixedValueDistribution { value %(d)g; }
+            }
+        }
+    }
+
+    dispersionModel none;
+    patchInteractionModel none;
+    surfaceFilmModel none;
+    stochasticCollisionModel none;
+
+    collisionModel pairCollision;
+
+    pairCollisionCoeffs
+    {
+        maxInteractionDistance  %(d)g;
+        writeReferredParticleCloud no;
+
+        pairModel pairSpringSliderDashpot;
+        pairSpringSliderDashpotCoeffs
+        {
+            useEquivalentSize   no;
+            alpha               %(a).8g;
+            b                   1.5;
+            mu                  %(mu)g;
+            cohesionEnergyDensity 0;
+            // one sub-cycle per deltaT (= the DEM step) up to ~50 m/s
+            collisionResolutionSteps 12;
+        }
+
+        wallModel    wallLocalSpringSliderDashpot;
+        wallLocalSpringSliderDashpotCoeffs
+        {
+            useEquivalentSize no;
+            collisionResolutionSteps 12;
+            walls { %(wall)s }
+        }
+    }
+}
+
+cloudFunctions {}
+""" % dict(e=RESTITUTION, rho=DENSITY, E=YOUNG, nu=POISSON, d=DIAMETER,
+           a=alpha, mu=FRICTION, wall=wall))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawTextHelpFormatter)
-    ap.add_argument("kind", choices=("dpi", "liggghts"))
+    ap.add_argument("kind", choices=("dpi", "liggghts", "openfoam"))
     ap.add_argument("case")
     ap.add_argument("--n", type=int, required=True)
     ap.add_argument("--steps", type=int, default=4000)
@@ -401,6 +587,8 @@ def main():
     ap.add_argument("--order", choices=("random", "morton"), default="random",
                     help="order of the particle list (the parcels' rows): "
                     "random (as placed) or sorted along a Morton curve")
+    ap.add_argument("--of-cell", type=float, default=2.0,
+                    help="openfoam: mesh cell edge in diameters")
     args = ap.parse_args()
 
     if args.steps % args.fluid_every:
@@ -420,8 +608,10 @@ def main():
 
     if args.kind == "dpi":
         writeDpi(args.case, x, v, L, args)
-    else:
+    elif args.kind == "liggghts":
         writeLiggghts(args.case, x, v, L, args)
+    else:
+        writeOpenfoam(args.case, x, v, L, args)
 
 
 if __name__ == "__main__":

@@ -1,29 +1,33 @@
 #!/usr/bin/python3
-"""Collect bench/peers runs into results.csv and throughput.png.
+"""Collect bench/peers runs into results.csv, results.md and throughput.png.
 
-Usage: analyse.py --csv results.csv --png throughput.png cases/N2000 ...
+Usage: analyse.py --csv results.csv --png throughput.png --md results.md \
+           cases/N2000 cases/N10000 ...
 
-Per size, the best of the repeated runs of each code (highest rate):
+One row per size N and process count np; per code the best of the repeated
+runs (highest loop rate). Rates are particle-steps per second of the solver
+loop, set-up excluded, in CPU seconds per process:
 
-  N, steps
-  dpi_engine_psps       dpiFoam 'DEM performance' (DEM engine, wall clock)
-  dpi_loop_cpu_psps     dpiFoam whole solver loop, CPU time, first fluid
-                        step excluded (see bench/settlingCarriers/analyse.py)
-  lig_loop_psps         LIGGGHTS N x steps / 'Loop time' (wall clock)
-  lig_cpu_psps          LIGGGHTS N x steps / (CPU time - CPU of a 0-step run)
-  ratio_wall            dpi_engine_psps / lig_loop_psps
-  ratio_cpu             dpi_loop_cpu_psps / lig_cpu_psps
-  dpi_pair_share ... dpi_integrate_share, lig_pair_share [%]
-  dpi_rss_MB, lig_rss_MB, dpi_kB_per_particle, lig_kB_per_particle
-  contacts_per_particle (2 pair + wall contacts)/N at the end (dpiFoam)
-  KE_rel_diff           |KE_dpi - KE_lig|/KE_lig at the end (same scene?)
-  load_before           1-min load average before the best dpiFoam run
+  dpi_psps      dpiFoam: N x DEM steps after the first fluid step /
+                (ExecutionTime last - ExecutionTime first fluid step)
+  dpi_engine_psps  dpiFoam 'DEM performance' line (DEM engine, wall clock)
+  lig_psps      LIGGGHTS: N x steps / (CPU per process of the run - CPU per
+                process of a 0-step run); lig_loop_psps from 'Loop time'
+                (wall clock)
+  of_psps       OpenFOAM: N x (steps - 1) / (ExecutionTime last - first)
+  ratio_lig     dpi_psps / lig_psps   (dpiFoam / LIGGGHTS, > 1: dpiFoam faster)
+  ratio_of      dpi_psps / of_psps    (dpiFoam / OpenFOAM)
+  *_kB_per_particle  peak RSS (GNU time) summed over the processes / N
+  *_KE          translational kinetic energy at the end [J] (same physics?)
+  *_runs        every run's rate
+  load_before   1-min load average before the best dpiFoam run
 """
 
 import argparse
 import csv
 import glob
 import os
+import re
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -31,14 +35,14 @@ sys.path.insert(0, os.path.join(HERE, "..", "common"))
 import benchLogs  # noqa: E402
 
 COLUMNS = [
-    "N", "steps", "dpi_engine_psps", "dpi_loop_cpu_psps", "lig_loop_psps",
-    "lig_cpu_psps", "ratio_wall", "ratio_cpu",
-    "dpi_pair_share", "dpi_wall_share", "dpi_neighbour_share",
-    "dpi_integrate_share", "lig_pair_share",
-    "dpi_rss_MB", "lig_rss_MB", "dpi_kB_per_particle", "lig_kB_per_particle",
-    "contacts_per_particle", "KE_rel_diff", "dpi_runs", "lig_runs",
-    "load_before",
+    "N", "np", "steps", "dpi_psps", "lig_psps", "of_psps",
+    "ratio_lig", "ratio_of", "dpi_engine_psps", "lig_loop_psps",
+    "dpi_kB_per_particle", "lig_kB_per_particle", "of_kB_per_particle",
+    "dpi_rss_MB", "lig_rss_MB", "of_rss_MB",
+    "dpi_KE", "lig_KE", "of_KE", "of_parcels_end",
+    "dpi_runs", "lig_runs", "of_runs", "load_before",
 ]
+NAN = float("nan")
 
 
 def load(case):
@@ -46,66 +50,99 @@ def load(case):
         with open(os.path.join(case, "log.machine")) as f:
             return float(f.read().split("load average")[1].split()[0])
     except (OSError, IndexError, ValueError):
-        return float("nan")
+        return NAN
 
 
-def sizeRow(base):
-    dpi = []
-    for d in sorted(glob.glob(os.path.join(base, "dpiFoam-r*"))):
-        log = benchLogs.dpiFoamLog(os.path.join(d, "log.dpiFoam"))
-        tm = benchLogs.gnuTime(os.path.join(d, "log.time"))
-        dg = benchLogs.demDiagnostics(d)
-        n = int(dg["nParcels"])
-        every = log["steps"]//log["nFluid"]
-        loopSteps = (log["nFluid"] - 1)*every
-        dpi.append(dict(log=log, tm=tm, dg=dg, n=n, case=d,
-                        cpuRate=n*loopSteps/log["loopCpu"]))
-    lig = []
-    setup = benchLogs.gnuTime(os.path.join(base, "liggghts", "time.setup"))
-    for d in sorted(glob.glob(os.path.join(base, "liggghts-r*"))):
-        log = benchLogs.liggghtsLog(os.path.join(d, "log.liggghts"))
-        tm = benchLogs.gnuTime(os.path.join(d, "log.time"))
-        ps = log["atoms"]*log["steps"]
-        lig.append(dict(log=log, tm=tm, rate=ps/log["loop"],
-                        cpuRate=ps/(tm["cpuTime"] - setup["cpuTime"])))
-    if not dpi or not lig:
-        raise RuntimeError("no runs in " + base)
+def times(case):
+    """GNU time of every process: summed peak RSS [kB], mean CPU [s]."""
+    ts = [benchLogs.gnuTime(p)
+          for p in sorted(glob.glob(os.path.join(case, "time.[0-9]*")))]
+    if not ts:
+        return dict(rss=NAN, cpu=NAN, n=0)
+    return dict(rss=sum(t["maxRssKB"] for t in ts),
+                cpu=sum(t["cpuTime"] for t in ts)/len(ts), n=len(ts))
 
-    bd = max(dpi, key=lambda r: r["log"]["engineRate"])
-    bl = max(lig, key=lambda r: r["rate"])
-    n = bd["n"]
-    lg = bd["log"]
-    r = {
-        "N": n, "steps": lg["steps"],
-        "dpi_engine_psps": lg["engineRate"],
-        "dpi_loop_cpu_psps": max(x["cpuRate"] for x in dpi),
-        "lig_loop_psps": bl["rate"],
-        "lig_cpu_psps": max(x["cpuRate"] for x in lig),
-        "dpi_pair_share": 100*lg["tPair"]/lg["tEngine"],
-        "dpi_wall_share": 100*lg["tWall"]/lg["tEngine"],
-        "dpi_neighbour_share": 100*lg["tNeighbour"]/lg["tEngine"],
-        "dpi_integrate_share": 100*lg["tIntegrate"]/lg["tEngine"],
-        "lig_pair_share": 100*bl["log"].get("tPair", float("nan"))
-        / bl["log"]["loop"],
-        "dpi_rss_MB": bd["tm"]["maxRssKB"]/1024.0,
-        "lig_rss_MB": bl["tm"]["maxRssKB"]/1024.0,
-        "dpi_kB_per_particle": bd["tm"]["maxRssKB"]/n,
-        "lig_kB_per_particle": bl["tm"]["maxRssKB"]/n,
-        "contacts_per_particle":
-            (2*bd["dg"]["nPair"] + bd["dg"]["nWall"])/n,
-        "KE_rel_diff": abs(bd["dg"]["KE"] - bl["log"]["KE"])
-        / bl["log"]["KE"],
-        "dpi_runs": " ".join("%.4g" % x["log"]["engineRate"] for x in dpi),
-        "lig_runs": " ".join("%.4g" % x["rate"] for x in lig),
-        "load_before": load(bd["case"]),
-    }
-    r["ratio_wall"] = r["dpi_engine_psps"]/r["lig_loop_psps"]
-    r["ratio_cpu"] = r["dpi_loop_cpu_psps"]/r["lig_cpu_psps"]
-    return r
+
+def dpiRun(d):
+    log = benchLogs.dpiFoamLog(os.path.join(d, "log.dpiFoam"))
+    dg = benchLogs.demDiagnostics(d)
+    n = int(dg["nParcels"])
+    every = log["steps"]//log["nFluid"] if log["nFluid"] else 0
+    loopSteps = (log["nFluid"] - 1)*every
+    return dict(case=d, n=n, steps=log["steps"],
+                rate=n*loopSteps/log["loopCpu"], engine=log["engineRate"],
+                KE=dg["KE"], tm=times(d))
+
+
+def ligRun(d, setup):
+    log = benchLogs.liggghtsLog(os.path.join(d, "log.liggghts"))
+    tm = times(d)
+    ps = log["atoms"]*log["steps"]
+    return dict(case=d, n=log["atoms"], rate=ps/(tm["cpu"] - setup["cpu"]),
+                loop=ps/log["loop"], KE=log.get("KE", NAN), tm=tm)
+
+
+def ofRun(d):
+    with open(os.path.join(d, "log.openfoam")) as f:
+        text = f.read()
+    exe = [float(x) for x in re.findall(
+        r"^ExecutionTime = " + benchLogs.FLOAT + " s", text, re.M)]
+    n = [int(x) for x in re.findall(
+        r"Current number of parcels\s*=\s*(\d+)", text)]
+    ke = re.findall(r"Linear kinetic energy\s*=\s*" + benchLogs.FLOAT, text)
+    if len(exe) < 2 or not n:
+        raise RuntimeError("no time steps in " + d)
+    return dict(case=d, n=n[0], nEnd=n[-1],
+                rate=n[0]*(len(exe) - 1)/(exe[-1] - exe[0]),
+                KE=float(ke[-1]) if ke else NAN, tm=times(d))
+
+
+def rows(base):
+    out = []
+    nps = sorted({int(m.group(1)) for p in glob.glob(os.path.join(base, "*-np*-r*"))
+                  for m in [re.search(r"-np(\d+)-r", p)] if m})
+    for np_ in nps:
+        dpi = [dpiRun(d) for d in
+               sorted(glob.glob(os.path.join(base, "dpiFoam-np%d-r*" % np_)))]
+        setupDir = os.path.join(base, "liggghts-setup-np%d" % np_)
+        lig = []
+        if os.path.isdir(setupDir):
+            setup = times(setupDir)
+            lig = [ligRun(d, setup) for d in sorted(glob.glob(
+                os.path.join(base, "liggghts-np%d-r*" % np_)))]
+        of = [ofRun(d) for d in
+              sorted(glob.glob(os.path.join(base, "openfoam-np%d-r*" % np_)))]
+        best = {k: (max(v, key=lambda r: r["rate"]) if v else None)
+                for k, v in (("dpi", dpi), ("lig", lig), ("of", of))}
+        any_ = next(b for b in best.values() if b)
+        r = {"N": any_["n"], "np": np_,
+             "steps": best["dpi"]["steps"] if best["dpi"] else ""}
+        for k, runs in (("dpi", dpi), ("lig", lig), ("of", of)):
+            b = best[k]
+            r[k + "_psps"] = b["rate"] if b else NAN
+            r[k + "_rss_MB"] = b["tm"]["rss"]/1024.0 if b else NAN
+            r[k + "_kB_per_particle"] = b["tm"]["rss"]/b["n"] if b else NAN
+            r[k + "_KE"] = b["KE"] if b else NAN
+            r[k + "_runs"] = " ".join("%.4g" % x["rate"] for x in runs)
+        r["dpi_engine_psps"] = best["dpi"]["engine"] if best["dpi"] else NAN
+        r["lig_loop_psps"] = best["lig"]["loop"] if best["lig"] else NAN
+        r["of_parcels_end"] = best["of"]["nEnd"] if best["of"] else ""
+        r["ratio_lig"] = r["dpi_psps"]/r["lig_psps"]
+        r["ratio_of"] = r["dpi_psps"]/r["of_psps"]
+        r["load_before"] = load(best["dpi"]["case"]) if best["dpi"] else NAN
+        out.append(r)
+    return out
 
 
 def fmt(v):
     return "%.6g" % v if isinstance(v, float) else str(v)
+
+
+def f(r, k):
+    try:
+        return float(r[k])
+    except (KeyError, ValueError):
+        return NAN
 
 
 def plot(rows, png):
@@ -114,64 +151,75 @@ def plot(rows, png):
     import matplotlib.pyplot as plt
     import numpy as np
 
-    rows = sorted(rows, key=lambda r: int(r["N"]))
     x = np.arange(len(rows))
-    w = 0.2
-    fig, ax = plt.subplots(figsize=(7, 4.5))
-    series = (("dpi_engine_psps", "dpiFoam DEM engine (wall clock)", "C0"),
-              ("dpi_loop_cpu_psps", "dpiFoam solver loop (CPU)", "C9"),
-              ("lig_loop_psps", "LIGGGHTS loop (wall clock)", "C3"),
-              ("lig_cpu_psps", "LIGGGHTS (CPU)", "C1"))
+    w = 0.27
+    fig, ax = plt.subplots(figsize=(8, 4.8))
+    series = (("dpi_psps", "dpiFoam", "C0"), ("lig_psps", "LIGGGHTS 3.8", "C3"),
+              ("of_psps", "OpenFOAM colliding cloud", "C2"))
     for k, (key, lab, col) in enumerate(series):
-        ax.bar(x + (k - 1.5)*w, [float(r[key])/1e6 for r in rows], w,
-               label=lab, color=col)
+        ax.bar(x + (k - 1)*w, [f(r, key)/1e6 for r in rows], w, label=lab,
+               color=col)
     ax.set_xticks(x)
-    ax.set_xticklabels(["N = %s\ndpiFoam/LIGGGHTS %.2f (wall), %.2f (CPU)"
-                        % (r["N"], float(r["ratio_wall"]),
-                           float(r["ratio_cpu"])) for r in rows], fontsize=8)
-    ax.set_ylabel("million particle-steps per second (1 process)")
-    ax.set_title("Settling 70 um carriers, hertz/history, dt 1e-8 s")
+    ax.set_xticklabels(["%s particles, np %s\n/LIG %.2f, /OF %.1f"
+                        % (r["N"], r["np"], f(r, "ratio_lig"),
+                           f(r, "ratio_of")) for r in rows], fontsize=7)
+    ax.set_yscale("log")
+    ax.set_ylabel("million particle-steps/s (solver loop, CPU per process)")
+    ax.set_title("Settling 70 um carriers, Hertz, dt 1e-8 s: "
+                 "ratios dpiFoam/LIGGGHTS, dpiFoam/OpenFOAM", fontsize=9)
     ax.legend(fontsize=8)
-    ax.grid(True, axis="y", alpha=0.3)
+    ax.grid(True, axis="y", alpha=0.3, which="both")
     fig.tight_layout()
     fig.savefig(png, dpi=120)
+
+
+def markdown(rows, md):
+    with open(md, "w") as fh:
+        fh.write("| particles | np | dpiFoam | LIGGGHTS | OpenFOAM | "
+                 "dpiFoam/LIGGGHTS | dpiFoam/OpenFOAM | kB per particle "
+                 "dpiFoam / LIGGGHTS / OpenFOAM |\n")
+        fh.write("|---:|---:|---:|---:|---:|---:|---:|---:|\n")
+        for r in rows:
+            fh.write("| %s | %s | %.3g | %.3g | %.3g | **%.2f** | **%.1f** | "
+                     "%.1f / %.1f / %.1f |\n"
+                     % (r["N"], r["np"], f(r, "dpi_psps"), f(r, "lig_psps"),
+                        f(r, "of_psps"), f(r, "ratio_lig"), f(r, "ratio_of"),
+                        f(r, "dpi_kB_per_particle"),
+                        f(r, "lig_kB_per_particle"),
+                        f(r, "of_kB_per_particle")))
+        fh.write("\n(particle-steps/s of the solver loop, CPU time per "
+                 "process; best of the runs in results.csv)\n")
 
 
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--csv", required=True)
     ap.add_argument("--png", required=True)
+    ap.add_argument("--md", required=True)
     ap.add_argument("cases", nargs="*")
     args = ap.parse_args()
 
-    rows = {}
-    if os.path.exists(args.csv):
-        with open(args.csv) as f:
-            for r in csv.DictReader(f):
-                rows[int(r["N"])] = r
+    table = {}
     for base in args.cases:
-        r = sizeRow(base)
-        rows[r["N"]] = {k: fmt(v) for k, v in r.items()}
-    ordered = [rows[k] for k in sorted(rows)]
+        for r in rows(base):
+            table[(int(r["N"]), int(r["np"]))] = {k: fmt(v)
+                                                  for k, v in r.items()}
+    ordered = [table[k] for k in sorted(table)]
 
-    with open(args.csv, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=COLUMNS)
+    with open(args.csv, "w", newline="") as fh:
+        w = csv.DictWriter(fh, fieldnames=COLUMNS)
         w.writeheader()
         for r in ordered:
             w.writerow({k: r.get(k, "") for k in COLUMNS})
-
-    print("%7s %12s %12s %12s %12s %8s %8s %8s %8s %9s" % (
-        "N", "dpi engine", "dpi loop CPU", "LIG loop", "LIG CPU",
-        "ratio w", "ratio c", "dpi kB/p", "LIG kB/p", "KE diff"))
+    markdown(ordered, args.md)
+    print(open(args.md).read())
     for r in ordered:
-        print("%7s %12.4g %12.4g %12.4g %12.4g %8.3f %8.3f %8.2f %8.2f %9.2e"
-              % (r["N"], float(r["dpi_engine_psps"]),
-                 float(r["dpi_loop_cpu_psps"]), float(r["lig_loop_psps"]),
-                 float(r["lig_cpu_psps"]), float(r["ratio_wall"]),
-                 float(r["ratio_cpu"]), float(r["dpi_kB_per_particle"]),
-                 float(r["lig_kB_per_particle"]), float(r["KE_rel_diff"])))
+        print("N %s np %s: final KE dpiFoam %.4g, LIGGGHTS %.4g, OpenFOAM "
+              "%.4g J; OpenFOAM parcels at the end %s"
+              % (r["N"], r["np"], f(r, "dpi_KE"), f(r, "lig_KE"),
+                 f(r, "of_KE"), r["of_parcels_end"]))
     plot(ordered, args.png)
-    print("wrote %s and %s" % (args.csv, args.png))
+    print("wrote %s, %s and %s" % (args.csv, args.md, args.png))
 
 
 if __name__ == "__main__":
