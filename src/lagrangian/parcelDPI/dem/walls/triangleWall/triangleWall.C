@@ -309,6 +309,19 @@ Foam::demWalls::triangleWall::cellOf(const point& x) const
 }
 
 
+void Foam::demWalls::triangleWall::checkReach(const scalar reach) const
+{
+    // The triangle grid was built for reach_: a larger query would miss
+    // triangles in the neighbouring grid cells
+    if (reach > reach_)
+    {
+        FatalErrorInFunction
+            << "Wall " << name() << " was prepared for a reach of " << reach_
+            << " m but is asked for " << reach << " m" << abort(FatalError);
+    }
+}
+
+
 void Foam::demWalls::triangleWall::findContacts
 (
     const point& x,
@@ -316,12 +329,7 @@ void Foam::demWalls::triangleWall::findContacts
     DynamicList<demWallContact>& contacts
 ) const
 {
-    if (reach > reach_)
-    {
-        FatalErrorInFunction
-            << "Wall " << name() << " was prepared for a reach of " << reach_
-            << " m but is asked for " << reach << " m" << abort(FatalError);
-    }
+    checkReach(reach);
 
     const std::vector<label>* cell = cellOf(x);
     if (cell && cell->size())
@@ -341,12 +349,7 @@ void Foam::demWalls::triangleWall::findCandidates
     DynamicList<label>& elements
 ) const
 {
-    if (reach > reach_)
-    {
-        FatalErrorInFunction
-            << "Wall " << name() << " was prepared for a reach of " << reach_
-            << " m but is asked for " << reach << " m" << abort(FatalError);
-    }
+    checkReach(reach);
 
     const std::vector<label>* cell = cellOf(x);
     if (!cell)
