@@ -263,8 +263,13 @@ def analyse(case):
                predOverlap_over_R=p["dmax"]/p["R"], reason="")
     log = open(os.path.join(case, "log.dpiFoam"), errors="replace").read() \
         if os.path.exists(os.path.join(case, "log.dpiFoam")) else ""
-    if "above the stability limit" in log and "FOAM FATAL" in log:
-        row.update(check="refused", status="refused")
+    # refused by the start-up check: the time step (t_H) or the elastic
+    # overlap at maxImpactVelocity (> 0.5 R*)
+    if "FOAM FATAL" in log and ("above the stability limit" in log
+                                or "elastic overlap of" in log):
+        row.update(check="refused", status="refused",
+                   reason="overlap" if "elastic overlap of" in log
+                   else "time step")
         return row
     row["check"] = "warned (allowUnstable)" if "running anyway" in log \
         else "accepted"
