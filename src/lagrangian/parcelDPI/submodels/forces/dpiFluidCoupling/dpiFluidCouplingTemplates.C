@@ -37,6 +37,12 @@ void Foam::dpiFluidCoupling::sample(const CloudType& cloud, const demState& s)
     spreadWeights_.clear();
     DynamicList<label> cells;
     DynamicList<scalar> weights;
+    // Parallel: kernel points outside this sub-domain, found afterwards
+    DynamicList<point> unresolved;
+    DynamicList<point>* unresolvedPtr =
+        Pstream::parRun() ? &unresolved : nullptr;
+    DynamicList<point> remotePts;
+    DynamicList<label> remoteRow;
     if (dispersion_.valid())
     {
         sgs_.setSize(nRows_);
@@ -124,10 +130,16 @@ void Foam::dpiFluidCoupling::sample(const CloudType& cloud, const demState& s)
         {
             dpiVoidFraction::pointWeights
             (
-                mesh_, p.position(), celli, 0.5*p.d(), cells, weights
+                mesh_, p.position(), celli, 0.5*p.d(), cells, weights,
+                unresolvedPtr
             );
             spreadCells_.append(cells);
             spreadWeights_.append(weights);
+            for (const point& pt : unresolved)
+            {
+                remotePts.append(pt);
+                remoteRow.append(i);
+            }
         }
         else
         {
@@ -137,6 +149,32 @@ void Foam::dpiFluidCoupling::sample(const CloudType& cloud, const demState& s)
         ++i;
     }
     spreadStart_[nRows_] = spreadCells_.size();
+
+    // Who holds the points outside this sub-domain (collective); those no
+    // processor holds are outside the mesh: the row's own cell (which
+    // pointWeights put among the row's cells), as in the serial kernel
+    remote_ = dpiRemotePoints(mesh_, remotePts);
+    remoteRow_.transfer(remoteRow);
+    remoteUTrans_.setSize(remote_.size());
+    remoteUTrans_ = Zero;
+    remoteUCoeff_.setSize(remote_.size());
+    remoteUCoeff_ = 0;
+    const scalar wPt = 1.0/dpiVoidFraction::nPoints;
+    forAll(remoteRow_, k)
+    {
+        if (!remote_.found(k))
+        {
+            const label row = remoteRow_[k];
+            for (label j = spreadStart_[row]; j < spreadStart_[row+1]; ++j)
+            {
+                if (spreadCells_[j] == cell_[row])
+                {
+                    spreadWeights_[j] += wPt;
+                    break;
+                }
+            }
+        }
+    }
 }
 
 
@@ -172,6 +210,32 @@ void Foam::dpiFluidCoupling::addSources(CloudType& cloud, const scalar dt)
         }
         spImpulse_[i] += dC;
     }
+
+    // Points held by other processors: summed here, sent once per fluid
+    // step (sendRemoteSources)
+    const scalar wPt = 1.0/dpiVoidFraction::nPoints;
+    forAll(remoteRow_, k)
+    {
+        if (remote_.found(k))
+        {
+            const label i = remoteRow_[k];
+            remoteUTrans_[k] -= wPt*dt*fCoupled_[i];
+            remoteUCoeff_[k] += wPt*dt*spCoupled_[i];
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::dpiFluidCoupling::sendRemoteSources(CloudType& cloud)
+{
+    if (!cloud.solution().coupled())
+    {
+        return;
+    }
+
+    remote_.add(remoteUTrans_, cloud.UTrans().field());
+    remote_.add(remoteUCoeff_, cloud.UCoeff().field());
 }
 
 
@@ -202,16 +266,35 @@ void Foam::dpiFluidCoupling::correctParcels
     const scalar coeff = cloud.solution().relaxCoeff("U");
     const volVectorField& U0 = U.oldTime();
 
-    Map<vector> dv(2*nRows_);
+    // The gas velocity change at the points other processors hold
+    const tmp<vectorField> tdUremote
+    (
+        remote_.fetch(vectorField(U.primitiveField() - U0.primitiveField()))
+    );
+    const vectorField& dUremote = tdUremote();
+    const scalar wPt = 1.0/dpiVoidFraction::nPoints;
+
+    List<vector> dUrow(nRows_, Zero);
     for (label i = 0; i < nRows_; ++i)
     {
-        vector dU(Zero);
         for (label k = spreadStart_[i]; k < spreadStart_[i+1]; ++k)
         {
             const label c = spreadCells_[k];
-            dU += spreadWeights_[k]*(U[c] - U0[c]);
+            dUrow[i] += spreadWeights_[k]*(U[c] - U0[c]);
         }
-        dv.insert(rowId_[i], coeff*spImpulse_[i]*dU/rowMass_[i]);
+    }
+    forAll(remoteRow_, k)
+    {
+        if (remote_.found(k))
+        {
+            dUrow[remoteRow_[k]] += wPt*dUremote[k];
+        }
+    }
+
+    Map<vector> dv(2*nRows_);
+    for (label i = 0; i < nRows_; ++i)
+    {
+        dv.insert(rowId_[i], coeff*spImpulse_[i]*dUrow[i]/rowMass_[i]);
     }
 
     // Parcels relocated on this processor
@@ -303,6 +386,8 @@ void Foam::dpiFluidCoupling::evolve
             addSources(cloud, dt);
         }
     }
+
+    sendRemoteSources(cloud);
 
     // Forces are not held into the next fluid step
     for (label i = 0; i < nRows_; ++i)

@@ -121,11 +121,16 @@ void Foam::dpiVoidFraction::pointWeights
     const label celli,
     const scalar R,
     DynamicList<label>& cells,
-    DynamicList<scalar>& weights
+    DynamicList<scalar>& weights,
+    DynamicList<point>* unresolved
 )
 {
     cells.clear();
     weights.clear();
+    if (unresolved)
+    {
+        unresolved->clear();
+    }
 
     const vectorList& pts = unitPoints();
     const scalar rOut = 0.917902*R;
@@ -186,7 +191,13 @@ void Foam::dpiVoidFraction::pointWeights
             }
             if (cellj < 0)
             {
-                // Outside the mesh or this processor: the centre's cell
+                if (unresolved)
+                {
+                    // Maybe another processor's: the caller decides
+                    unresolved->append(pt);
+                    continue;
+                }
+                // Outside the mesh: the centre's cell
                 cellj = celli;
             }
         }
@@ -202,6 +213,13 @@ void Foam::dpiVoidFraction::pointWeights
         {
             weights[k] += wPt;
         }
+    }
+
+    // The caller gives the points no processor holds to the centre's cell
+    if (unresolved && unresolved->size() && !cells.found(celli))
+    {
+        cells.append(celli);
+        weights.append(0);
     }
 }
 

@@ -5,6 +5,7 @@
 #include "dpiVoidFraction.H"
 #include "volFields.H"
 #include "extrapolatedCalculatedFvPatchFields.H"
+#include "dpiRemotePoints.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -37,13 +38,57 @@ Foam::dpiVoidFraction::theta(const CloudType& cloud) const
     volScalarField& theta = ttheta.ref();
     scalarField& Vs = theta.primitiveFieldRef();
 
-    for (const parcelType& p : cloud)
+    if (!Pstream::parRun())
     {
-        distribute
-        (
-            mesh, p.position(), p.cell(), 0.5*p.d(),
-            solidVolume(p.d(), p.N()), Vs
-        );
+        for (const parcelType& p : cloud)
+        {
+            distribute
+            (
+                mesh, p.position(), p.cell(), 0.5*p.d(),
+                solidVolume(p.d(), p.N()), Vs
+            );
+        }
+    }
+    else
+    {
+        // Points in another processor's sub-domain go to its cells, as in
+        // the serial run; points outside the mesh to the centre's cell
+        DynamicList<label> cells;
+        DynamicList<scalar> weights;
+        DynamicList<point> unresolved;
+        DynamicList<point> remotePts;
+        DynamicList<scalar> remoteVs;
+        DynamicList<label> remoteOwnCell;
+
+        for (const parcelType& p : cloud)
+        {
+            const scalar Vp = solidVolume(p.d(), p.N());
+            pointWeights
+            (
+                mesh, p.position(), p.cell(), 0.5*p.d(), cells, weights,
+                &unresolved
+            );
+            forAll(cells, k)
+            {
+                Vs[cells[k]] += weights[k]*Vp;
+            }
+            for (const point& pt : unresolved)
+            {
+                remotePts.append(pt);
+                remoteVs.append(Vp/nPoints);
+                remoteOwnCell.append(p.cell());
+            }
+        }
+
+        const dpiRemotePoints remote(mesh, remotePts);
+        remote.add(remoteVs, Vs);
+        forAll(remotePts, k)
+        {
+            if (!remote.found(k))
+            {
+                Vs[remoteOwnCell[k]] += remoteVs[k];
+            }
+        }
     }
 
     // The solid volume the gas's floor will not see
