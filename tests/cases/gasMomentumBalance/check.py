@@ -2,7 +2,11 @@
 """Momentum balance of gas plus parcels in the periodic box (run by ./run in
 its run folder): per fluid step, P_n - P_(n-1) = M g dt, where
 P = sum(rho alpha U V) over the cells + sum(N m v) over the parcels and M
-the total mass."""
+the total mass.
+
+check.py --compare A B TOL: instead, the gas of runs A and B (U.air,
+alpha.air and the cloud's UTrans at A's last time) must agree to TOL
+relative to A's largest value (serial against parallel)."""
 import glob
 import os
 import re
@@ -15,8 +19,9 @@ G = np.array([0.0, 0.0, -9.81])
 # Tolerances per step: of the parcels' initial momentum P0 (the issue's 1e-6)
 # and of the momentum exchanged in the step (from the command line; the run
 # script loosens the second for the unconverged 2-corrector variant)
-TOL = float(sys.argv[1]) if len(sys.argv) > 1 else 1e-6
-TOLX = float(sys.argv[2]) if len(sys.argv) > 2 else 1e-6
+COMPARE = len(sys.argv) > 1 and sys.argv[1] == "--compare"
+TOL = float(sys.argv[1]) if len(sys.argv) > 1 and not COMPARE else 1e-6
+TOLX = float(sys.argv[2]) if len(sys.argv) > 2 and not COMPARE else 1e-6
 NUM = r"[-+0-9.eE]+"
 
 
@@ -51,6 +56,28 @@ def internalScalars(path):
     return np.array([float(v) for v in vals])
 
 
+def dimensionedVectors(path):
+    """The value list of a DimensionedField (the cloud's UTrans)"""
+    txt = body(path)
+    txt = txt[txt.index("value"):]
+    return vectors(txt[txt.index("("):])
+
+
+def compare(a, b, tol):
+    """Gas of runs a and b at a's last time; the number of fields off"""
+    t = max((d for d in os.listdir(a) if re.fullmatch(r"[0-9.e+-]+", d)
+             and d != "0"), key=float)
+    bad = 0
+    for f, read in (("U.air", internalVectors), ("alpha.air", internalScalars),
+                    ("dpiCloud:UTrans", dimensionedVectors)):
+        x, y = read(os.path.join(a, t, f)), read(os.path.join(b, t, f))
+        err = np.abs(x - y).max()/np.abs(x).max()
+        print("t = %s: %s max |%s - %s|/max|%s| = %.2e (tolerance %g)"
+              % (t, f, a, b, a, err, tol))
+        bad += not err <= tol
+    return bad
+
+
 def cloudScalars(path):
     txt = body(path)
     m = re.search(r"(\d+)\s*\{\s*(\S+)\s*\}", txt)
@@ -73,6 +100,9 @@ def state(t):
     m = N*rho*np.pi/6*d**3
     return gasP, gasM, (m[:, None]*v).sum(axis=0), m.sum()
 
+
+if COMPARE:
+    sys.exit(1 if compare(sys.argv[2], sys.argv[3], float(sys.argv[4])) else 0)
 
 times = sorted((d for d in glob.glob("[0-9]*") if d != "0" and os.path.isdir(d)),
                key=float)

@@ -266,12 +266,14 @@ void Foam::dpiFluidCoupling::correctParcels
     const scalar coeff = cloud.solution().relaxCoeff("U");
     const volVectorField& U0 = U.oldTime();
 
-    // The gas velocity change at the points other processors hold
-    const tmp<vectorField> tdUremote
-    (
-        remote_.fetch(vectorField(U.primitiveField() - U0.primitiveField()))
-    );
-    const vectorField& dUremote = tdUremote();
+    // The gas velocity change at the points other processors hold (a
+    // serial run has none: remoteRow_ is empty and nothing is built)
+    vectorField dUremote;
+    if (Pstream::parRun())
+    {
+        const vectorField dU(U.primitiveField() - U0.primitiveField());
+        dUremote = remote_.fetch(dU);
+    }
     const scalar wPt = 1.0/dpiVoidFraction::nPoints;
 
     List<vector> dUrow(nRows_, Zero);
