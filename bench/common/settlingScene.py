@@ -156,6 +156,41 @@ def header(cls, obj):
             "    class       %s;\n    object      %s;\n}\n" % (cls, obj))
 
 
+def dpiCloudPreamble(rho):
+    """The part of a DEM-only dpiCloudProperties before its dem dictionary:
+    a KinematicCloud without gas, stock submodels off (the DEM engine
+    replaces them), particle density rho [kg/m^3]"""
+    return """solution
+{
+    active          true;
+    coupled         false;
+    transient       yes;
+    cellValueSourceCorrection off;
+    maxCo           0.3;
+    interpolationSchemes { rho.none cell; U.none cell; mu.none cell; }
+    integrationSchemes { U Euler; }
+}
+
+constantProperties
+{
+    rho0            %g;
+    alphaMax        0.9;
+}
+
+subModels
+{
+    particleForces {}
+    injectionModels {}
+    dispersionModel none;
+    patchInteractionModel none;
+    stochasticCollisionModel none;
+    surfaceFilmModel none;
+}
+
+cloudFunctions {}
+""" % rho
+
+
 def maxImpactVelocity(vrms):
     # Two particles at the cap speed head-on, plus a margin
     return max(1.0, 2*2.5*vrms*1.2)
@@ -241,35 +276,7 @@ def writeDpi(case, x, v, L, args):
     with open(os.path.join(case, "constant/dpiCloudProperties"), "w") as f:
         f.write(header("dictionary", "dpiCloudProperties"))
         f.write("""// settlingCarriers benchmark (bench/common/settlingScene.py)
-solution
-{
-    active          true;
-    coupled         false;
-    transient       yes;
-    cellValueSourceCorrection off;
-    maxCo           0.3;
-    interpolationSchemes { rho.none cell; U.none cell; mu.none cell; }
-    integrationSchemes { U Euler; }
-}
-
-constantProperties
-{
-    rho0            %(rho)g;
-    alphaMax        0.9;
-}
-
-subModels
-{
-    particleForces {}
-    injectionModels {}
-    dispersionModel none;
-    patchInteractionModel none;
-    stochasticCollisionModel none;
-    surfaceFilmModel none;
-}
-
-cloudFunctions {}
-
+%(preamble)s
 dem
 {
     timeStep        %(dt)g;
@@ -320,7 +327,7 @@ injectors
         #include    "carrierParticles"
     }
 }
-""" % dict(rho=DENSITY, dt=dt, d=DIAMETER, E=YOUNG, nu=POISSON,
+""" % dict(preamble=dpiCloudPreamble(DENSITY), rho=DENSITY, dt=dt, d=DIAMETER, E=YOUNG, nu=POISSON,
            e=RESTITUTION, mu=FRICTION, vmax=maxImpactVelocity(args.vrms)))
 
 

@@ -143,22 +143,7 @@ def main():
         f.write(ss.header("dictionary", "dpiCloudProperties"))
         f.write("""// costVsN powder (bench/costVsN/powder.py): %(nc)d carriers coated with
 // %(P)d API primaries each as %(nPer)d parcels of N = %(N)d
-solution
-{
-    active true; coupled false; transient yes;
-    cellValueSourceCorrection off; maxCo 0.3;
-    interpolationSchemes { rho.none cell; U.none cell; mu.none cell; }
-    integrationSchemes { U Euler; }
-}
-constantProperties { rho0 %(rho)g; alphaMax 0.9; }
-subModels
-{
-    particleForces {} injectionModels {} dispersionModel none;
-    patchInteractionModel none; stochasticCollisionModel none;
-    surfaceFilmModel none;
-}
-cloudFunctions {}
-dem
+%(preamble)sdem
 {
     timeStep 1e-8;
     types
@@ -189,7 +174,7 @@ dem
 }
 injectors { powder { type singleParticles; #include "powderParticles" } }
 agglomerates { linkGap 0; }
-""" % dict(nc=a.carriers, P=nPer*a.N, nPer=nPer, N=a.N, rho=RHO, dc=DC,
+""" % dict(nc=a.carriers, P=nPer*a.N, nPer=nPer, N=a.N, preamble=ss.dpiCloudPreamble(RHO), rho=RHO, dc=DC,
            da=DA, Y=Y, nu=NU, walls=walls))
     print("powder.py: %d carriers in a box of %.3g mm, %d API parcels of N %d"
           % (a.carriers, L*1e3, len(parts) - a.carriers, a.N))

@@ -34,6 +34,10 @@ import sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "common"))
+import settlingScene as ss  # noqa: E402
+
 RHO = 1520.0
 NU = 0.35
 E_REST = 0.85
@@ -115,11 +119,6 @@ def reference(kind, N, Y, v):
     return dict(e=r["e"], Fmax=r["F"]*p["Fel"], tc=r["tc"]*p["tH"])
 
 
-def header(cls, obj):
-    return ("FoamFile\n{\n    version 2.0;\n    format ascii;\n"
-            "    class %s;\n    object %s;\n}\n" % (cls, obj))
-
-
 def write(a):
     p = params(a.kind, a.N, a.Y, a.v)
     case = a.dir
@@ -170,7 +169,7 @@ def write(a):
         trace = "(0)"
 
     with open(os.path.join(case, "system/controlDict"), "w") as f:
-        f.write(header("dictionary", "controlDict"))
+        f.write(ss.header("dictionary", "controlDict"))
         f.write("application dpiFoam;\nstartFrom startTime;\nstartTime 0;\n"
                 "stopAt endTime;\nendTime %.17g;\ndeltaT %.17g;\n"
                 "writeControl timeStep;\nwriteInterval 1000000;\n"
@@ -178,39 +177,24 @@ def write(a):
                 "writeCompression off;\ntimeFormat general;\n"
                 "timePrecision 17;\nrunTimeModifiable false;\n" % (Dt, Dt))
     with open(os.path.join(case, "system/fvSchemes"), "w") as f:
-        f.write(header("dictionary", "fvSchemes"))
+        f.write(ss.header("dictionary", "fvSchemes"))
         f.write("ddtSchemes { default Euler; }\ngradSchemes { default Gauss "
                 "linear; }\ndivSchemes { default none; }\nlaplacianSchemes "
                 "{ default Gauss linear corrected; }\ninterpolationSchemes "
                 "{ default linear; }\nsnGradSchemes { default corrected; }\n")
     with open(os.path.join(case, "system/fvSolution"), "w") as f:
-        f.write(header("dictionary", "fvSolution") + "solvers {}\n")
+        f.write(ss.header("dictionary", "fvSolution") + "solvers {}\n")
     with open(os.path.join(case, "constant/couplingProperties"), "w") as f:
-        f.write(header("dictionary", "couplingProperties"))
+        f.write(ss.header("dictionary", "couplingProperties"))
         f.write("fluid none;\ncloudName dpiCloud;\n")
     with open(os.path.join(case, "constant/g"), "w") as f:
-        f.write(header("uniformDimensionedVectorField", "g"))
+        f.write(ss.header("uniformDimensionedVectorField", "g"))
         f.write("dimensions [0 1 -2 0 0 0 0];\nvalue (0 0 0);\n")
     with open(os.path.join(case, "constant/dpiCloudProperties"), "w") as f:
-        f.write(header("dictionary", "dpiCloudProperties"))
+        f.write(ss.header("dictionary", "dpiCloudProperties"))
         f.write("""// bench/stability: %(kind)s, N %(N)d, Y %(Y)g Pa, v %(v)g m/s,
 // dt %(dt)g s = %(r).4g t_H (t_H %(tH)g s with m_dyn)
-solution
-{
-    active true; coupled false; transient yes;
-    cellValueSourceCorrection off; maxCo 0.3;
-    interpolationSchemes { rho.none cell; U.none cell; mu.none cell; }
-    integrationSchemes { U Euler; }
-}
-constantProperties { rho0 %(rho)g; alphaMax 0.9; }
-subModels
-{
-    particleForces {} injectionModels {} dispersionModel none;
-    patchInteractionModel none; stochasticCollisionModel none;
-    surfaceFilmModel none;
-}
-cloudFunctions {}
-dem
+%(preamble)sdem
 {
     timeStep %(dt).17g;
     types
@@ -228,7 +212,7 @@ dem
 injectors { impact { type singleParticles; particles ( %(parts)s ); } }
 trace { parcels %(trace)s; }
 """ % dict(kind=a.kind, N=a.N, Y=a.Y, v=a.v, dt=a.dt, r=a.dt/p["tH"],
-           tH=p["tH"], rho=RHO, types=types, e=E_REST, mu=MU, walls=walls,
+           tH=p["tH"], preamble=ss.dpiCloudPreamble(RHO), rho=RHO, types=types, e=E_REST, mu=MU, walls=walls,
            allow="true" if a.allow_unstable else "false", parts=parts,
            trace=trace, cohesion=cohesion))
     with open(os.path.join(case, "impact.info"), "w") as f:
