@@ -18,18 +18,15 @@ summary.csv, one row per N:
   when the impact started).
 """
 import argparse
-import csv
 import glob
-import math
 import os
 import re
 import sys
 
-import numpy as np
-
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "common"))
 import benchLogs  # noqa: E402
+import tradeCurve  # noqa: E402
 
 
 def lastCounts(log):
@@ -71,46 +68,19 @@ def main():
     if not runs:
         sys.exit("analyse.py: no runs in " + a.cases)
     cols = list(runs[0].keys())
-    with open(a.csv, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=cols)
-        w.writeheader()
-        for r in sorted(runs, key=lambda r: (r["N"], r["seed"])):
-            w.writerow({k: ("%.6g" % v if isinstance(v, float) else v)
-                        for k, v in r.items()})
+    tradeCurve.writeCsv(a.csv, sorted(runs, key=lambda r: (r["N"], r["seed"])),
+                        cols)
 
-    Ns = sorted({r["N"] for r in runs})
-    summ = []
-    for N in Ns:
-        g = [r for r in runs if r["N"] == N]
-        x = np.array([r["detached_fraction"] for r in g])
-        cpu = np.mean([r["cpu_total"] for r in g])
-        summ.append(dict(
-            N=N, runs=len(g), parcels=g[0]["parcels"], mean=x.mean(),
-            std=x.std(ddof=1) if len(x) > 1 else float("nan"),
-            sem=x.std(ddof=1)/math.sqrt(len(x)) if len(x) > 1
-            else float("nan"),
-            cpu_mean=cpu,
-            not_attached_before=sum(1 for r in g if r["detached_before"])))
+    summ = tradeCurve.summarise(runs, "detached_fraction")
     base = next((s for s in summ if s["N"] == 1), None)
     for s in summ:
-        if base:
-            s["error"] = s["mean"] - base["mean"]
-            s["rel_error"] = s["error"]/base["mean"] if base["mean"] \
-                else float("nan")
-            s["within_spread"] = bool(abs(s["error"]) <= base["std"])
-            s["speedup"] = base["cpu_mean"]/s["cpu_mean"]
-        else:
-            s.update(error=float("nan"), rel_error=float("nan"),
-                     within_spread="", speedup=float("nan"))
+        g = [r for r in runs if r["N"] == s["N"]]
+        s["parcels"] = g[0]["parcels"]
+        s["not_attached_before"] = sum(1 for r in g if r["detached_before"])
     scols = ["N", "runs", "parcels", "mean", "std", "sem", "error",
              "rel_error", "within_spread", "cpu_mean", "speedup",
              "not_attached_before"]
-    with open(a.summary, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=scols)
-        w.writeheader()
-        for s in summ:
-            w.writerow({k: ("%.6g" % s[k] if isinstance(s[k], float)
-                            else s[k]) for k in scols})
+    tradeCurve.writeCsv(a.summary, summ, scols)
 
     lines = ["| N | parcels | runs | detached fraction, mean | seed-to-seed "
              "std | error vs N = 1 | relative error | within N = 1 spread | "
@@ -156,21 +126,10 @@ def main():
 
     ax = axs[1]
     if base:
-        sp = [s["speedup"] for s in summ]
-        er = [abs(s["error"]) for s in summ]
-        ax.errorbar(sp, er, yerr=[s["sem"] for s in summ], fmt="o-",
-                    capsize=3, label="|mean(N) - mean(1)| +- sem(N)")
-        for s, x, y in zip(summ, sp, er):
-            ax.annotate("N=%d" % s["N"], (x, y), textcoords="offset points",
-                        xytext=(4, 4), fontsize=8)
-        ax.axhline(base["std"], color="C0", ls="--",
-                   label="N = 1 seed-to-seed std")
-        ax.set_xscale("log")
-        ax.set_xlabel("speed-up (CPU time of N = 1 / CPU time of N)")
+        tradeCurve.tradeAxes(ax, summ, "detached fraction")
         ax.set_ylabel("error of the detached fraction vs N = 1")
         ax.set_title("The trade curve: error against speed-up", fontsize=9)
         ax.legend(fontsize=8)
-        ax.grid(True, which="both", alpha=0.3)
     fig.tight_layout()
     fig.savefig(a.png, dpi=120)
     print("wrote %s, %s, %s, %s" % (a.csv, a.summary, a.md, a.png))

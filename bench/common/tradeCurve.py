@@ -1,0 +1,77 @@
+"""Accuracy against the coarsening factor N, shared by bench/accuracyVsN and
+bench/inhalerVsN: a measure per run summarised per N (mean, seed-to-seed
+spread, error against N = 1, speed-up), the CSV writer and the trade-curve
+axes (error against speed-up).
+
+A run is a dict with at least "N" and the measured keys; the CPU key gives
+the speed-up (mean CPU time of the N = 1 runs / mean CPU time of the N
+runs)."""
+
+import csv
+import math
+
+import numpy as np
+
+
+def summarise(runs, key, cpu="cpu_total"):
+    """One dict per N (ascending): N, runs, mean, std (ddof 1), sem,
+    cpu_mean, error (mean - mean at N = 1), rel_error, within_spread
+    (|error| <= std at N = 1) and speedup; NaN/'' without N = 1 runs."""
+    out = []
+    for N in sorted({r["N"] for r in runs}):
+        g = [r for r in runs if r["N"] == N]
+        x = np.array([r[key] for r in g], dtype=float)
+        many = len(x) > 1
+        out.append(dict(
+            N=N, runs=len(g), mean=x.mean(),
+            std=x.std(ddof=1) if many else float("nan"),
+            sem=x.std(ddof=1)/math.sqrt(len(x)) if many else float("nan"),
+            cpu_mean=float(np.mean([r[cpu] for r in g]))))
+    base = next((s for s in out if s["N"] == 1), None)
+    for s in out:
+        if base:
+            s["error"] = s["mean"] - base["mean"]
+            s["rel_error"] = s["error"]/base["mean"] if base["mean"] \
+                else float("nan")
+            s["within_spread"] = bool(abs(s["error"]) <= base["std"]) \
+                if base["std"] == base["std"] else ""
+            s["speedup"] = base["cpu_mean"]/s["cpu_mean"]
+        else:
+            s.update(error=float("nan"), rel_error=float("nan"),
+                     within_spread="", speedup=float("nan"))
+    return out
+
+
+def writeCsv(path, rows, cols):
+    """rows (dicts) to path, floats as %.6g."""
+    with open(path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=cols)
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: ("%.6g" % r[k] if isinstance(r[k], float)
+                            else r[k]) for k in cols})
+
+
+def tradeAxes(ax, summ, label, color=None, annotate=True):
+    """|error| of one measure against speed-up, +- its sem at N, and the
+    N = 1 seed-to-seed std as a dashed line of the same colour."""
+    base = next((s for s in summ if s["N"] == 1), None)
+    if not base:
+        return
+    sp = [s["speedup"] for s in summ]
+    er = [abs(s["error"]) for s in summ]
+    sem = [s["sem"] for s in summ]
+    line = ax.errorbar(sp, er, yerr=None if all(e != e for e in sem) else sem,
+                       fmt="o-",
+                       capsize=3, color=color,
+                       label="%s: |mean(N) - mean(1)| +- sem(N)" % label)
+    c = line[0].get_color()
+    if annotate:
+        for s, x, y in zip(summ, sp, er):
+            ax.annotate("N=%d" % s["N"], (x, y), textcoords="offset points",
+                        xytext=(4, 4), fontsize=8)
+    ax.axhline(base["std"], color=c, ls="--",
+               label="%s: N = 1 seed-to-seed std" % label)
+    ax.set_xscale("log")
+    ax.set_xlabel("speed-up (CPU time of N = 1 / CPU time of N)")
+    ax.grid(True, which="both", alpha=0.3)
