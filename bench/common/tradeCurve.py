@@ -52,26 +52,30 @@ def writeCsv(path, rows, cols):
                             else r[k]) for k in cols})
 
 
-def tradeAxes(ax, summ, label, color=None, annotate=True):
+def tradeAxes(ax, summ, label, color=None, annotate=True, relative=False):
     """|error| of one measure against speed-up, +- its sem at N, and the
-    N = 1 seed-to-seed std as a dashed line of the same colour."""
+    N = 1 seed-to-seed std as a dashed line of the same colour; relative:
+    all three divided by |mean at N = 1| (measures of different units on
+    one axis)."""
     base = next((s for s in summ if s["N"] == 1), None)
     if not base:
         return
+    scale = abs(base["mean"]) if relative else 1.0
     sp = [s["speedup"] for s in summ]
-    er = [abs(s["error"]) for s in summ]
-    sem = [s["sem"] for s in summ]
+    er = [abs(s["error"])/scale for s in summ]
+    sem = [s["sem"]/scale for s in summ]
+    what = "|mean(N) - mean(1)|%s" % ("/mean(1)" if relative else "")
     line = ax.errorbar(sp, er, yerr=None if all(e != e for e in sem) else sem,
-                       fmt="o-",
-                       capsize=3, color=color,
-                       label="%s: |mean(N) - mean(1)| +- sem(N)" % label)
+                       fmt="o-", capsize=3, color=color,
+                       label="%s: %s +- sem(N)" % (label, what))
     c = line[0].get_color()
     if annotate:
         for s, x, y in zip(summ, sp, er):
             ax.annotate("N=%d" % s["N"], (x, y), textcoords="offset points",
                         xytext=(4, 4), fontsize=8)
-    ax.axhline(base["std"], color=c, ls="--",
-               label="%s: N = 1 seed-to-seed std" % label)
+    ax.axhline(base["std"]/scale, color=c, ls="--",
+               label="%s: N = 1 seed-to-seed std%s"
+               % (label, "/mean(1)" if relative else ""))
     ax.set_xscale("log")
     ax.set_xlabel("speed-up (CPU time of N = 1 / CPU time of N)")
     ax.grid(True, which="both", alpha=0.3)
