@@ -600,6 +600,13 @@ def main():
 
     if args.steps % args.fluid_every:
         sys.exit("settlingScene: --steps must be a multiple of --fluid-every")
+    # the benchmarks time the solver loop from the first fluid step's end
+    # to the last's (start-up excluded): that needs two fluid steps
+    if args.steps < 2*args.fluid_every:
+        sys.exit("settlingScene: --steps %d gives %d fluid step(s) of "
+                 "--fluid-every %d; the timed loop needs at least 2"
+                 % (args.steps, args.steps//args.fluid_every,
+                    args.fluid_every))
 
     x, v, L = generate(args.n, args.phi, args.vrms, args.seed)
     if args.order == "morton":
