@@ -56,13 +56,16 @@ def tradeAxes(ax, summ, label, color=None, annotate=True, relative=False):
     """|error| of one measure against speed-up, +- its sem at N, and the
     N = 1 seed-to-seed std as a dashed line of the same colour; relative:
     all three divided by |mean at N = 1| (measures of different units on
-    one axis)."""
+    one axis). False when there is nothing to draw."""
     base = next((s for s in summ if s["N"] == 1), None)
     if not base:
-        return
+        return False
     scale = abs(base["mean"]) if relative else 1.0
+    er = [abs(s["error"])/scale if scale else float("nan") for s in summ]
+    if all(e != e for e in er):
+        # nothing to draw (e.g. relative to a zero mean in a short run)
+        return False
     sp = [s["speedup"] for s in summ]
-    er = [abs(s["error"])/scale for s in summ]
     sem = [s["sem"]/scale for s in summ]
     what = "|mean(N) - mean(1)|%s" % ("/mean(1)" if relative else "")
     line = ax.errorbar(sp, er, yerr=None if all(e != e for e in sem) else sem,
@@ -79,3 +82,4 @@ def tradeAxes(ax, summ, label, color=None, annotate=True, relative=False):
     ax.set_xscale("log")
     ax.set_xlabel("speed-up (CPU time of N = 1 / CPU time of N)")
     ax.grid(True, which="both", alpha=0.3)
+    return True

@@ -198,12 +198,17 @@ def main():
                      "seeds, band = range" % (r0["carriers"], r0["primaries"]),
                      fontsize=9)
     ax = axs[2]
-    for c, (key, label) in enumerate(MEASURES):
-        tradeCurve.tradeAxes(ax, summs[key], label, color="C%d" % c,
-                             annotate=(c == 0), relative=True)
+    drawn = [tradeCurve.tradeAxes(ax, summs[key], label, color="C%d" % c,
+                                  annotate=(c == 0), relative=True)
+             for c, (key, label) in enumerate(MEASURES)]
     ax.set_ylabel("relative error vs N = 1")
     ax.set_title("The trade curve: error against speed-up", fontsize=9)
-    ax.legend(fontsize=7)
+    if any(drawn):
+        ax.legend(fontsize=7)
+    else:
+        ax.text(0.5, 0.5, "no measure with a non-zero mean at N = 1\n"
+                "(no API detached or emitted in this window?)",
+                ha="center", va="center", transform=ax.transAxes)
     fig.tight_layout()
     fig.savefig(a.png, dpi=120)
     print("wrote %s, %s, %s, %s" % (a.csv, a.summary, a.md, a.png))
