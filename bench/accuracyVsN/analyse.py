@@ -30,13 +30,8 @@ import tradeCurve  # noqa: E402
 
 
 def lastCounts(log):
-    text = open(log).read()
-    m = re.findall(r"API primaries: attached to carriers (\d+), detached "
-                   r"(\d+)", text)
-    if not m:
-        raise RuntimeError("no 'API primaries' line in " + log)
-    exe = re.findall(r"^ExecutionTime = " + benchLogs.FLOAT, text, re.M)
-    return int(m[-1][0]), int(m[-1][1]), float(exe[-1])
+    h = benchLogs.apiHistory(log)
+    return int(h["attached"][-1]), int(h["detached"][-1]), h["cpu"]
 
 
 def run(d):

@@ -5,6 +5,8 @@ import glob
 import os
 import re
 
+import numpy as np
+
 FLOAT = r"([-+0-9.eE]+|nan|inf)"
 
 
@@ -70,6 +72,41 @@ def dpiFoamLog(path):
     out["parallel"] = bool(re.search(r"^Exec\s*:.*-parallel", text, re.M))
     m = re.search(r"^nProcs\s*:\s*(\d+)", text, re.M)
     out["nProcs"] = int(m.group(1)) if m else 1
+    return out
+
+
+def apiHistory(path):
+    """Per fluid step of a dpiFoam log (the cloud's "API primaries" line):
+    time, API primaries attached to carriers and detached, primaries out of
+    the outlet patch (every type, carriers included: the log's counter) and
+    primaries of type carrier in the system; and the last ExecutionTime.
+    Arrays keyed t, attached, detached, escaped, carriers; "cpu"."""
+    rows = []
+    now, escNow, carNow = None, 0, 0
+    exe = 0.0
+    with open(path) as f:
+        for line in f:
+            if line.startswith("Time = "):
+                now = float(line.split()[2])
+            elif "Primaries of type carrier = " in line:
+                carNow = int(line.split("=")[1])
+            elif "API primaries: attached to carriers" in line:
+                m = re.search(r"attached to carriers (\d+), detached (\d+)",
+                              line)
+                rows.append([now, int(m.group(1)), int(m.group(2)), escNow,
+                             carNow])
+            elif "Patch outlet: escaped parcels" in line:
+                escNow = int(re.search(r"\(primaries (\d+)\)", line).group(1))
+                if rows:
+                    rows[-1][3] = escNow
+            elif line.startswith("ExecutionTime = "):
+                exe = float(line.split()[2])
+    if not rows:
+        raise RuntimeError("no 'API primaries' line in " + path)
+    cols = list(zip(*rows))
+    out = {k: np.array(c) for k, c in
+           zip(("t", "attached", "detached", "escaped", "carriers"), cols)}
+    out["cpu"] = exe
     return out
 
 

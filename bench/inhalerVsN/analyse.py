@@ -39,37 +39,6 @@ MEASURES = [("t50", "half detached, ms after gas on"),
             ("fpf_acc", "FPF (FPF_system accumulated)")]
 
 
-def history(log):
-    """Per fluid step of a dpiFoam log: time, API primaries attached to
-    carriers, primaries out of the outlet and carriers in the system; and
-    the last ExecutionTime. The outlet counter counts the primaries of
-    every type, carriers included."""
-    t, att, esc, car = [], [], [], []
-    now, escNow, carNow = None, 0, 0
-    exe = 0.0
-    with open(log) as f:
-        for line in f:
-            if line.startswith("Time = "):
-                now = float(line.split()[2])
-            elif "Primaries of type carrier = " in line:
-                carNow = int(line.split("=")[1])
-            elif "API primaries: attached to carriers" in line:
-                m = re.search(r"attached to carriers (\d+)", line)
-                t.append(now)
-                att.append(int(m.group(1)))
-                esc.append(escNow)
-                car.append(carNow)
-            elif "Patch outlet: escaped parcels" in line:
-                escNow = int(re.search(r"\(primaries (\d+)\)", line).group(1))
-                if esc:
-                    esc[-1] = escNow
-            elif line.startswith("ExecutionTime = "):
-                exe = float(line.split()[2])
-    if not t:
-        raise RuntimeError("no 'API primaries' line in " + log)
-    return np.array(t), np.array(att), np.array(esc), np.array(car), exe
-
-
 def fpf(d):
     files = sorted(glob.glob(os.path.join(d, "postProcessing", "fpf", "*",
                                           "fpf.dat")),
@@ -85,9 +54,12 @@ def run(d, t1, ramp):
     N, seed = int(m.group(1)), int(m.group(2))
     carriers, parcels, primaries = map(int, open(os.path.join(d, "bed.txt"))
                                        .read().split())
-    ts, as_, _, _, cs = history(os.path.join(d, "log.dpiFoam.sedimentation"))
-    ti, ai, ei, car, ci = history(os.path.join(d, "log.dpiFoam.inhalation"))
-    ei = ei - (carriers - car)          # API primaries out of the outlet
+    sed = benchLogs.apiHistory(os.path.join(d, "log.dpiFoam.sedimentation"))
+    inh = benchLogs.apiHistory(os.path.join(d, "log.dpiFoam.inhalation"))
+    ts, as_, cs = sed["t"], sed["attached"], sed["cpu"]
+    ti, ai, ci = inh["t"], inh["attached"], inh["cpu"]
+    # API primaries out of the outlet: the counter minus the carriers gone
+    ei = inh["escaped"] - (carriers - inh["carriers"])
     k = min(np.searchsorted(ti, t1 + ramp - 1e-9), len(ti) - 1)
     det = 1 - ai/primaries
     j = np.argmax(det >= 0.5) if det[-1] >= 0.5 else -1
