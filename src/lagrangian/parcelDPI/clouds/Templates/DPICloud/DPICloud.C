@@ -118,7 +118,10 @@ void Foam::DPICloud<CloudType>::setModels()
             << " nWallContacts maxOverlap/R* nParcels" << nl;
     }
 
-    const label nPatches = this->mesh().boundaryMesh().size();
+    // Counted on the global patches only: they come first and are the same
+    // on every processor, while the processor patches differ in number
+    // (the element-wise sums in storeCounters need equal list sizes)
+    const label nPatches = this->mesh().boundaryMesh().nNonProcessor();
     escapedParcels_.setSize(nPatches, 0);
     escapedPrimaries_.setSize(nPatches, 0);
     lostParcels_.setSize(nPatches, 0);
@@ -171,7 +174,7 @@ void Foam::DPICloud<CloudType>::readState()
     (
         Pstream::master() ? dpiDict.subOrEmptyDict("escaped") : dictionary()
     );
-    forAll(pbm, patchi)
+    forAll(escapedParcels_, patchi)
     {
         const dictionary d(escDict.subOrEmptyDict(pbm[patchi].name()));
         escapedParcels_[patchi] = d.lookupOrDefault<label>("parcels", 0);
@@ -253,7 +256,7 @@ void Foam::DPICloud<CloudType>::storeCounters()
 
     dictionary escDict;
     const polyBoundaryMesh& pbm = this->mesh().boundaryMesh();
-    forAll(pbm, patchi)
+    forAll(escParcels, patchi)
     {
         if (escParcels[patchi] || lost[patchi])
         {
