@@ -177,6 +177,7 @@ int main(int argc, char *argv[])
     }
 
     cloud.engine().writePerformance(Info);
+    cloud.balance().summary(Info);
 
     Info<< "End\n" << endl;
 

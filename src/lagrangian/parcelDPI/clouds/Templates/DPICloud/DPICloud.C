@@ -118,6 +118,15 @@ void Foam::DPICloud<CloudType>::setModels()
             << " nWallContacts maxOverlap/R* nParcels" << nl;
     }
 
+    balance_.reset
+    (
+        new parcelBalance
+        (
+            this->mesh().time().globalPath()/"postProcessing"/this->name()
+           /"parcelBalance"/this->mesh().time().timeName()
+        )
+    );
+
     // Counted on the global patches only: they come first and are the same
     // on every processor, while the processor patches differ in number
     // (the element-wise sums in storeCounters need equal list sizes)
@@ -458,6 +467,13 @@ void Foam::DPICloud<CloudType>::writeDiagnostics()
             << ' ' << nParcels << endl;
     }
 
+    balance_->sample
+    (
+        this->db().time().value(),
+        state_.owned(),
+        state_.size()
+    );
+
     Info<< "    DEM: " << engine_->nSteps() << " sub-steps so far"
         << ", contacts (pair, wall) = (" << nPair << ", " << nWall << ")"
         << ", max overlap/R* = " << maxOverlap
@@ -515,6 +531,7 @@ Foam::DPICloud<CloudType>::DPICloud
     diagFile_(nullptr),
     agglomerates_(nullptr),
     halo_(nullptr),
+    balance_(nullptr),
     agglomerateIds_(),
     escapedParcels_(),
     escapedPrimaries_(),
@@ -554,6 +571,7 @@ Foam::DPICloud<CloudType>::DPICloud
     diagFile_(nullptr),
     agglomerates_(nullptr),
     halo_(nullptr),
+    balance_(nullptr),
     agglomerateIds_(),
     escapedParcels_(c.escapedParcels_),
     escapedPrimaries_(c.escapedPrimaries_),
@@ -581,6 +599,7 @@ Foam::DPICloud<CloudType>::DPICloud
     diagFile_(nullptr),
     agglomerates_(nullptr),
     halo_(nullptr),
+    balance_(nullptr),
     agglomerateIds_(),
     escapedParcels_(),
     escapedPrimaries_(),
