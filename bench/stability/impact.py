@@ -161,9 +161,10 @@ def write(a):
         parts = ("{ type %s; position (0 0 %.15g); U (0 0 %.15g); }"
                  % (t, r + gap, -a.v))
         types = ("%s { diameter %g; density %g; youngsModulus %g; "
-                 "poissonsRatio %g; N %d; }\n"
+                 "poissonsRatio %g; N %d;%s }\n"
                  "wallMaterial { youngsModulus %g; poissonsRatio %g; }"
-                 % (t, D[t], RHO, a.Y, NU, a.N, a.Y, NU))
+                 % (t, D[t], RHO, a.Y, NU, a.N,
+                    " api true;" if t == "API" else "", a.Y, NU))
         walls = ("{ floor { type plane; point (0 0 0); normal (0 0 1); "
                  "material wallMaterial; } }")
         trace = "(0)"

@@ -33,7 +33,7 @@ const std::string types
 (
     "types {"
     "  api { diameter 5e-6; density 1520; youngsModulus 5e8;"
-    "        poissonsRatio 0.35; N 100; }"
+    "        poissonsRatio 0.35; N 100; api true; }"
     "  carrier { diameter 70e-6; density 1520; youngsModulus 5e8;"
     "        poissonsRatio 0.35; }"
     "  wall { youngsModulus 5e8; poissonsRatio 0.35; }"
@@ -173,10 +173,32 @@ TEST(demInput, badInputIsRejected)
         demEngine(toDict(withTypes
         (
             "types { api { diameter 5e-6; density 1520; youngsModulus 5e8;"
-            " poissonsRatio 0.35; N 100; }"
+            " poissonsRatio 0.35; N 100; api true; }"
             " api2 { diameter 5e-6; density 1520; youngsModulus 5e8;"
-            " poissonsRatio 0.35; N 10; } }"
+            " poissonsRatio 0.35; N 10; api true; } }"
         ))),
+        Foam::error
+    );
+
+    // A coarse-grained type must be API: a carrier of N 10 would be
+    // counted as API in every statistic (no 'api', or api false)
+    EXPECT_THROW
+    (
+        demMaterials(toDict
+        (
+            "types { carrier { diameter 70e-6; density 1520;"
+            " youngsModulus 5e8; poissonsRatio 0.35; N 10; } }" + pairs
+        )),
+        Foam::error
+    );
+    EXPECT_THROW
+    (
+        demMaterials(toDict
+        (
+            "types { carrier { diameter 70e-6; density 1520;"
+            " youngsModulus 5e8; poissonsRatio 0.35; N 10; api false; } }"
+          + pairs
+        )),
         Foam::error
     );
 

@@ -40,7 +40,7 @@ const std::string materialsText
     "  carrier { diameter 70e-6; density 1520; youngsModulus 5e8;"
     "            poissonsRatio 0.35; }"
     "  api { diameter 5e-6; density 1520; youngsModulus 5e8;"
-    "        poissonsRatio 0.35; N 10; }"
+    "        poissonsRatio 0.35; N 10; api true; }"
     "  mid { diameter 10e-6; density 3000; youngsModulus 5e8;"
     "        poissonsRatio 0.35; }"
     "  wall { youngsModulus 5e8; poissonsRatio 0.35; }"

@@ -199,7 +199,12 @@ Foam::incompressibleGas::incompressibleGas
     alphacf_("alphacf", fvc::interpolate(alphac_)),
     alphaPhic_(IOobject::groupName("alphaPhi", phaseName_), alphacf_*phic_),
     turbulence_(nullptr),
-    cumulativeContErr_(0)
+    cumulativeContErr_(0),
+    maxCo_
+    (
+        mesh.time().controlDict().getOrDefault<scalar>("maxCo", 1)
+    ),
+    warnedCo_(0)
 {
     setRefCell(p_, pimple_.dict(), pRefCell_, pRefValue_);
     mesh.setFluxRequired(p_.name());
@@ -314,6 +319,20 @@ void Foam::incompressibleGas::solve(basicDPICloud& cloud)
         const scalar CoNum =
             0.5*gMax(sumPhi/mesh_.V().field())*runTime.deltaTValue();
         Info<< "Courant Number max: " << CoNum << endl;
+
+        // The fluid step is fixed (it is the coupling interval): say when
+        // it is too long for the gas, once and again whenever it doubles
+        if (CoNum > maxCo_ && CoNum > 2*warnedCo_)
+        {
+            WarningInFunction
+                << "Courant number " << CoNum << " of the gas at time "
+                << runTime.timeName() << " is above maxCo " << maxCo_
+                << " (system/controlDict, default 1): the PISO correctors"
+                << " and the frozen coupling are inaccurate or unstable"
+                << " there. Lower deltaT (the coupling interval, a whole"
+                << " number of DEM steps)." << endl;
+            warnedCo_ = CoNum;
+        }
     }
 
     while (pimple_.loop())

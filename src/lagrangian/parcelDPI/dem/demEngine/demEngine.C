@@ -385,6 +385,20 @@ void Foam::demEngine::flushHistory()
 }
 
 
+void Foam::demEngine::prepareWalls(const scalar reach)
+{
+    if (reach > wallReach_)
+    {
+        // A little margin so a slightly larger parcel does not re-bin
+        wallReach_ = 1.1*reach;
+        for (demWall& w : walls_)
+        {
+            w.prepare(wallReach_);
+        }
+    }
+}
+
+
 void Foam::demEngine::rebuild(const demState& s)
 {
     const double t0 = wallClock();
@@ -411,16 +425,7 @@ void Foam::demEngine::rebuild(const demState& s)
 
     // Walls must see every sphere within its radius plus cohesion range,
     // and, for the near-wall test below, the skin
-    const scalar reach = rMax + range + search_.skin();
-    if (reach > wallReach_)
-    {
-        // A little margin so a slightly larger parcel does not re-bin
-        wallReach_ = 1.1*reach;
-        for (demWall& w : walls_)
-        {
-            w.prepare(wallReach_);
-        }
-    }
+    prepareWalls(rMax + range + search_.skin());
 
     // Rows that may reach a wall before the next rebuild, and the wall
     // elements each may reach: no row moves more than half the skin before
@@ -1066,6 +1071,8 @@ Foam::demEngine::demEngine(const dictionary& dict, const polyMesh* mesh)
     wallMaterial_(),
     search_(0),
     maxImpactVelocity_(0),
+    startOverlapWarn_(0.01),
+    startOverlapRefuse_(0.1),
     allowUnstable_(false),
     g_(Zero),
     time_(0),
@@ -1113,6 +1120,19 @@ Foam::demEngine::demEngine(const dictionary& dict, const polyMesh* mesh)
             << exit(FatalIOError);
     }
     allowUnstable_ = tsDict.getOrDefault<bool>("allowUnstable", false);
+
+    const dictionary soDict(dict.subOrEmptyDict("startOverlap"));
+    startOverlapWarn_ = soDict.getOrDefault<scalar>("warn", startOverlapWarn_);
+    startOverlapRefuse_ =
+        soDict.getOrDefault<scalar>("refuse", startOverlapRefuse_);
+    if (!(startOverlapWarn_ > 0) || !(startOverlapRefuse_ >= startOverlapWarn_))
+    {
+        FatalIOErrorInFunction(dict)
+            << "startOverlap { warn " << startOverlapWarn_ << "; refuse "
+            << startOverlapRefuse_ << "; } in dictionary " << dict.name()
+            << ": need 0 < warn <= refuse (overlap / R*; defaults 0.01 and"
+            << " 0.1)" << exit(FatalIOError);
+    }
 
     Info<< "DEM engine: " << materials_.size() << " types "
         << materials_.names() << ", " << walls_.size() << " walls, skin "

@@ -75,7 +75,20 @@ void Foam::demMaterials::readType(const label typei, const dictionary& d)
         N_[typei] = readInRange(d, "N", positive, "> 0 (carriers 1)");
     }
 
-    api_[typei] = d.getOrDefault<bool>("api", N_[typei] > 1);
+    // Representative parcels stand for N primary API particles; carriers
+    // are tracked one by one. A type with N > 1 must say it is API: a
+    // carrier of N 10 would otherwise be counted as API in every statistic
+    api_[typei] = d.getOrDefault<bool>("api", false);
+    if (N_[typei] > 1 && !api_[typei])
+    {
+        FatalIOErrorInFunction(d)
+            << "Type " << names_[typei] << " has N " << N_[typei]
+            << (d.found("api") ? " and api false" : " and no 'api true'")
+            << " in dictionary " << d.name() << nl
+            << "    Only API types may be coarse-grained (carriers are"
+            << " tracked one by one, N 1): set N 1 for a carrier, or"
+            << " api true; if this type is API" << exit(FatalIOError);
+    }
 }
 
 

@@ -52,7 +52,30 @@ void Foam::DPICloud<CloudType>::setModels()
         )
     );
 
-    if (Pstream::parRun())
+    // Parallel: the DEM either on its own partition of the parcels (load
+    // balanced, dem/loadBalance rcb, the default) or on the mesh owners
+    // with a halo of the mesh sub-domains' boxes
+    const dictionary& demDict = props.subDict("dem");
+    const bool subStepForces =
+        coupling_->active()
+     && coupling_->update() != dpiFluidCoupling::updateMode::held;
+    if (demPartition::selected(demDict) && subStepForces)
+    {
+        // The fluid forces of subStep are evaluated on the mesh side at
+        // every sub-step, from the mesh owners' rows: not yet available on
+        // the DEM's own partition
+        IOWarningInFunction(demDict)
+            << "dem/loadBalance rcb (the default in parallel) needs"
+            << " fluidCoupling/dragUpdate held; with subStep the DEM runs on"
+            << " the mesh owners, not load balanced. Set loadBalance"
+            << " { type none; } in dictionary " << demDict.name()
+            << " to say so and silence this warning." << endl;
+    }
+    if (demPartition::selected(demDict) && !subStepForces)
+    {
+        partition_.reset(new demPartition(demDict, engine_(), this->mesh()));
+    }
+    else if (Pstream::parRun())
     {
         halo_.reset(new processorHalo(this->mesh()));
         engine_->setHalo(halo_.get());
@@ -408,6 +431,22 @@ void Foam::DPICloud<CloudType>::copyToState(const bool contactForcesValid)
     }
     state_.contactForcesValid = contactForcesValid;
 
+    // With the DEM's own partition the histories travel with the rows
+    // every fluid step, from the parcels' copies
+    if (partition_.valid())
+    {
+        rowKeys_.setSize(state_.size());
+        rowXi_.setSize(state_.size());
+        label i = 0;
+        for (const parcelType& p : *this)
+        {
+            rowKeys_[i] = p.contactKeys();
+            rowXi_[i] = p.contactXi();
+            ++i;
+        }
+        return;
+    }
+
     // The engine keeps the histories between steps; the parcels' copies
     // are loaded once, at the first step (a restart)
     if (!historyLoaded_)
@@ -437,11 +476,20 @@ void Foam::DPICloud<CloudType>::copyFromState()
         p.f() = state_.fContact[i];
         p.torque() = state_.tContact[i];
 
-        keys.clear();
-        xi.clear();
-        engine_->history(p.globalId(), keys, xi);
-        p.contactKeys() = keys;
-        p.contactXi() = xi;
+        if (partition_.valid())
+        {
+            // Brought back from the DEM owner (demPartition::collect)
+            p.contactKeys().transfer(rowKeys_[i]);
+            p.contactXi().transfer(rowXi_[i]);
+        }
+        else
+        {
+            keys.clear();
+            xi.clear();
+            engine_->history(p.globalId(), keys, xi);
+            p.contactKeys() = keys;
+            p.contactXi() = xi;
+        }
         ++i;
     }
 }
@@ -467,11 +515,13 @@ void Foam::DPICloud<CloudType>::writeDiagnostics()
             << ' ' << nParcels << endl;
     }
 
+    const demState& demRows =
+        partition_.valid() ? partition_->state() : state_;
     balance_->sample
     (
         this->db().time().value(),
-        state_.owned(),
-        state_.size()
+        demRows.owned(),
+        demRows.size()
     );
 
     Info<< "    DEM: " << engine_->nSteps() << " sub-steps so far"
@@ -482,7 +532,7 @@ void Foam::DPICloud<CloudType>::writeDiagnostics()
 
 
 template<class CloudType>
-void Foam::DPICloud<CloudType>::buildHalo(const scalar Dt)
+Foam::scalar Foam::DPICloud<CloudType>::haloReach(const scalar Dt) const
 {
     scalar rMax = 0;
     scalar vMax = 0;
@@ -496,13 +546,7 @@ void Foam::DPICloud<CloudType>::buildHalo(const scalar Dt)
 
     // Both parcels of a pair may travel towards each other during the
     // fluid step; 1.5 x the current speed covers moderate acceleration
-    const scalar reach =
-        engine_->interactionReach(rMax) + 2*1.5*vMax*Dt;
-
-    // The owners' contact histories travel with the ghosts at every build:
-    // a parcel new to this processor's halo brings the contacts it already
-    // has (walls included), so they continue here as they do at its owner
-    halo_->build(state_, reach, &engine_());
+    return engine_->interactionReach(rMax) + 2*1.5*vMax*Dt;
 }
 
 
@@ -525,12 +569,16 @@ Foam::DPICloud<CloudType>::DPICloud
     injectors_(),
     nextGlobalId_(0),
     state_(),
+    startChecked_(false),
     historyLoaded_(false),
     observer_(nullptr),
     trace_(nullptr),
     diagFile_(nullptr),
     agglomerates_(nullptr),
     halo_(nullptr),
+    partition_(nullptr),
+    rowKeys_(),
+    rowXi_(),
     balance_(nullptr),
     agglomerateIds_(),
     escapedParcels_(),
@@ -565,12 +613,16 @@ Foam::DPICloud<CloudType>::DPICloud
     injectors_(),
     nextGlobalId_(c.nextGlobalId_),
     state_(),
+    startChecked_(false),
     historyLoaded_(false),
     observer_(nullptr),
     trace_(nullptr),
     diagFile_(nullptr),
     agglomerates_(nullptr),
     halo_(nullptr),
+    partition_(nullptr),
+    rowKeys_(),
+    rowXi_(),
     balance_(nullptr),
     agglomerateIds_(),
     escapedParcels_(c.escapedParcels_),
@@ -593,12 +645,16 @@ Foam::DPICloud<CloudType>::DPICloud
     injectors_(),
     nextGlobalId_(c.nextGlobalId_),
     state_(),
+    startChecked_(false),
     historyLoaded_(false),
     observer_(nullptr),
     trace_(nullptr),
     diagFile_(nullptr),
     agglomerates_(nullptr),
     halo_(nullptr),
+    partition_(nullptr),
+    rowKeys_(),
+    rowXi_(),
     balance_(nullptr),
     agglomerateIds_(),
     escapedParcels_(),
@@ -736,9 +792,36 @@ void Foam::DPICloud<CloudType>::motion
 
     copyToState(nInjected == 0);
 
-    if (halo_.valid())
+    // The start (or restart) and every injection: no parcel inside another
+    // or a wall, no parcel without size (a collective decision, on the DEM
+    // rows with their halo)
+    word checkWhen;
+    if (nInjected || !startChecked_)
     {
-        buildHalo(Dt);
+        checkWhen = startChecked_ ? "injected" : "at the start";
+        startChecked_ = true;
+    }
+
+    demStepper* stepper = engine_.get();
+    if (partition_.valid())
+    {
+        partition_->setInputs(rowKeys_, rowXi_, haloReach(Dt), checkWhen);
+        stepper = partition_.get();
+    }
+    else
+    {
+        if (halo_.valid())
+        {
+            // The owners' contact histories travel with the ghosts at every
+            // build: a parcel new to this processor's halo brings the
+            // contacts it already has (walls included), so they continue
+            // here as they do at its owner
+            halo_->build(state_, haloReach(Dt), &engine_());
+        }
+        if (checkWhen.size())
+        {
+            engine_->checkStartState(state_, checkWhen);
+        }
     }
 
     demObserver* obs = observer_;
@@ -750,15 +833,31 @@ void Foam::DPICloud<CloudType>::motion
 
     // DEM sub-steps with the fluid forces in state_.fExt, their reaction
     // into UTrans/UCoeff (issue 5); only engine_->evolve without forces
-    coupling_->evolve(*this, *engine_, state_, Dt, this->g().value(), obs);
+    coupling_->evolve(*this, *stepper, state_, Dt, this->g().value(), obs);
 
-    agglomerates_->update
-    (
-        state_,
-        engine_->materials(),
-        agglomerateIds_,
-        halo_.get()
-    );
+    if (partition_.valid())
+    {
+        // Labelled where the DEM rows are, then everything back to the
+        // mesh owners
+        agglomerates_->update
+        (
+            partition_->state(),
+            engine_->materials(),
+            partition_->agglomerateIds(),
+            &partition_->halo()
+        );
+        partition_->collect(state_, agglomerateIds_, rowKeys_, rowXi_);
+    }
+    else
+    {
+        agglomerates_->update
+        (
+            state_,
+            engine_->materials(),
+            agglomerateIds_,
+            halo_.get()
+        );
+    }
     agglomerates_->write(t1);
 
     copyFromState();

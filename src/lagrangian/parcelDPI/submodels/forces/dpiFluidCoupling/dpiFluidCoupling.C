@@ -260,6 +260,18 @@ Foam::dpiFluidCoupling::dpiFluidCoupling
                 << " drag. Name a drag (wenYuParcel) in fluidCoupling/forces"
                 << exit(FatalIOError);
         }
+        if (fluidOn_)
+        {
+            // Legitimate for a gas-only run or a one-way check, but more
+            // often a forgotten fluidCoupling: say it
+            IOWarningInFunction(dict_)
+                << "The gas is on (constant/couplingProperties: fluid"
+                << " incompressible) but " << dict_.name() << "/forces"
+                << " names no force: the parcels feel no drag and the gas"
+                << " no parcels. Name the drag (e.g. fluidCoupling { forces"
+                << " { wenYuParcel {} pressureGradient {} } }), or set"
+                << " fluid none for a DEM-only run." << endl;
+        }
         return;
     }
 

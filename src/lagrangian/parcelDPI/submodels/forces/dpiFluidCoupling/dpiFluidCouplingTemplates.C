@@ -343,7 +343,7 @@ template<class CloudType>
 void Foam::dpiFluidCoupling::evolve
 (
     CloudType& cloud,
-    demEngine& engine,
+    demStepper& engine,
     demState& s,
     const scalar Dt,
     const vector& g,

@@ -1,0 +1,491 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+\*---------------------------------------------------------------------------*/
+
+#include "demPartition.H"
+#include "PstreamBuffers.H"
+#include "SortableList.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::label Foam::demPartition::bisect
+(
+    const UList<point>& x,
+    labelList& pts,
+    const label begin,
+    const label end,
+    const label p0,
+    const label n,
+    const boundBox& bb,
+    DynamicList<label>& dir,
+    DynamicList<scalar>& cut,
+    DynamicList<label>& lower,
+    DynamicList<label>& upper,
+    DynamicList<label>& leafProc
+)
+{
+    const label node = dir.size();
+    dir.append(-1);
+    cut.append(0);
+    lower.append(-1);
+    upper.append(-1);
+    leafProc.append(p0);
+
+    if (n == 1)
+    {
+        regions_[p0] = bb;
+        return node;
+    }
+
+    // Across the longest extent of the points (of the box if none)
+    boundBox ptsBb;
+    for (label k = begin; k < end; ++k)
+    {
+        ptsBb.add(x[pts[k]]);
+    }
+    const vector span = (end > begin) ? ptsBb.span() : vector::one;
+    direction d = 0;
+    for (direction c = 1; c < 3; ++c)
+    {
+        if (span[c] > span[d])
+        {
+            d = c;
+        }
+    }
+
+    // The points in order along d (ties by index: the same on every
+    // processor, the tree is computed on the master only anyway)
+    const label nA = n/2;
+    const label count = end - begin;
+    SortableList<scalar> coord(count);
+    for (label k = 0; k < count; ++k)
+    {
+        coord[k] = x[pts[begin + k]][d];
+    }
+    coord.sort();   // sortedOrder: a stable sort
+    labelList sorted(count);
+    for (label k = 0; k < count; ++k)
+    {
+        sorted[k] = pts[begin + coord.indices()[k]];
+    }
+    for (label k = 0; k < count; ++k)
+    {
+        pts[begin + k] = sorted[k];
+    }
+
+    // The a/n quantile: the cut halfway between the last point of the
+    // lower part and the first of the upper one
+    const label kA = label(scalar(count)*nA/n + 0.5);
+    scalar c;
+    if (count == 0)
+    {
+        c = 0.5*(max(bb.min()[d], -1) + min(bb.max()[d], 1));
+    }
+    else if (kA <= 0)
+    {
+        c = coord[0] - SMALL;
+    }
+    else if (kA >= count)
+    {
+        c = coord[count - 1] + SMALL;
+    }
+    else
+    {
+        c = 0.5*(coord[kA - 1] + coord[kA]);
+    }
+
+    boundBox bbA(bb);
+    boundBox bbB(bb);
+    bbA.max()[d] = c;
+    bbB.min()[d] = c;
+
+    dir[node] = d;
+    cut[node] = c;
+
+    // Points exactly on the cut go up (owner() does the same)
+    label kSplit = begin;
+    while (kSplit < end && x[pts[kSplit]][d] < c)
+    {
+        ++kSplit;
+    }
+
+    const label a = bisect
+    (
+        x, pts, begin, kSplit, p0, nA, bbA, dir, cut, lower, upper, leafProc
+    );
+    const label b = bisect
+    (
+        x, pts, kSplit, end, p0 + nA, n - nA, bbB, dir, cut, lower, upper,
+        leafProc
+    );
+    lower[node] = a;
+    upper[node] = b;
+
+    return node;
+}
+
+
+void Foam::demPartition::partition(const demState& meshRows)
+{
+    // All positions to the master, which cuts; the tree to everyone
+    List<pointField> allX(Pstream::nProcs());
+    allX[Pstream::myProcNo()] =
+        pointField(SubList<point>(meshRows.x, meshRows.owned()));
+    Pstream::gatherList(allX);
+
+    regions_.setSize(Pstream::nProcs());
+    if (Pstream::master())
+    {
+        const pointField x(ListListOps::combine<pointField>
+        (
+            allX, accessOp<pointField>()
+        ));
+        labelList pts(identity(x.size()));
+
+        DynamicList<label> dir, lower, upper, leafProc;
+        DynamicList<scalar> cut;
+        const scalar big = 0.1*GREAT;
+        bisect
+        (
+            x, pts, 0, x.size(), 0, Pstream::nProcs(),
+            boundBox(point::uniform(-big), point::uniform(big)),
+            dir, cut, lower, upper, leafProc
+        );
+        dir_.transfer(dir);
+        cut_.transfer(cut);
+        lower_.transfer(lower);
+        upper_.transfer(upper);
+        leafProc_.transfer(leafProc);
+    }
+    Pstream::scatter(dir_);
+    Pstream::scatter(cut_);
+    Pstream::scatter(lower_);
+    Pstream::scatter(upper_);
+    Pstream::scatter(leafProc_);
+    Pstream::scatter(regions_);
+
+    halo_.setBoxes(regions_);
+    repartition_ = false;
+    ++nPartitions_;
+
+    Info<< "    DEM partition " << nPartitions_ << ": "
+        << returnReduce(meshRows.owned(), sumOp<label>())
+        << " parcels cut into " << Pstream::nProcs() << " regions" << nl;
+}
+
+
+Foam::label Foam::demPartition::owner(const point& x) const
+{
+    label node = 0;
+    while (dir_[node] >= 0)
+    {
+        node = (x[dir_[node]] < cut_[node]) ? lower_[node] : upper_[node];
+    }
+    return leafProc_[node];
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::demPartition::demPartition
+(
+    const dictionary& dict,
+    demEngine& engine,
+    const polyMesh& mesh
+)
+:
+    engine_(engine),
+    maxImbalance_(1.1),
+    dir_(),
+    cut_(),
+    lower_(),
+    upper_(),
+    leafProc_(),
+    regions_(),
+    repartition_(true),
+    nPartitions_(0),
+    dem_(),
+    agglomerateIds_(),
+    fromProc_(),
+    fromRow_(),
+    halo_(mesh),
+    keys_(nullptr),
+    xi_(nullptr),
+    reach_(0),
+    checkWhen_()
+{
+    const dictionary lbDict(dict.subOrEmptyDict("loadBalance"));
+    maxImbalance_ = lbDict.getOrDefault<scalar>("maxImbalance", maxImbalance_);
+    if (!(maxImbalance_ >= 1))
+    {
+        FatalIOErrorInFunction(dict)
+            << "loadBalance/maxImbalance " << maxImbalance_
+            << " in dictionary " << dict.name() << " must be >= 1 (max/mean"
+            << " of the parcels per processor; default 1.1)"
+            << exit(FatalIOError);
+    }
+
+    engine_.setHalo(&halo_);
+
+    Info<< "DEM load balance: the DEM's own partition of the parcels (rcb),"
+        << " re-partitioned when max/mean > " << maxImbalance_ << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+bool Foam::demPartition::selected(const dictionary& demDict)
+{
+    const dictionary lbDict(demDict.subOrEmptyDict("loadBalance"));
+    const word type(lbDict.getOrDefault<word>("type", "rcb"));
+    if (type != "rcb" && type != "none")
+    {
+        FatalIOErrorInFunction(demDict)
+            << "Unknown loadBalance type " << type << " in dictionary "
+            << demDict.name() << nl
+            << "    valid types: 2(rcb none)" << exit(FatalIOError);
+    }
+    return Pstream::parRun() && type == "rcb";
+}
+
+
+void Foam::demPartition::setInputs
+(
+    const List<labelList>& keys,
+    const List<List<vector>>& xi,
+    const scalar reach,
+    const word& checkWhen
+)
+{
+    keys_ = &keys;
+    xi_ = &xi;
+    reach_ = reach;
+    checkWhen_ = checkWhen;
+}
+
+
+void Foam::demPartition::distribute(const demState& meshRows)
+{
+    if (repartition_)
+    {
+        partition(meshRows);
+    }
+
+    const label nProcs = Pstream::nProcs();
+    const label nMesh = meshRows.owned();
+    const List<labelList>& keys = *keys_;
+    const List<List<vector>>& xi = *xi_;
+
+    List<DynamicList<label>> rowsTo(nProcs);
+    for (label i = 0; i < nMesh; ++i)
+    {
+        rowsTo[owner(meshRows.x[i])].append(i);
+    }
+
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    forAll(rowsTo, proci)
+    {
+        const labelList rows(rowsTo[proci]);
+        if (rows.empty())
+        {
+            continue;
+        }
+        UOPstream os(proci, pBufs);
+        os  << rows
+            << List<point>(UIndirectList<point>(meshRows.x, rows))
+            << List<vector>(UIndirectList<vector>(meshRows.v, rows))
+            << List<vector>(UIndirectList<vector>(meshRows.omega, rows))
+            << List<scalar>(UIndirectList<scalar>(meshRows.r, rows))
+            << List<scalar>(UIndirectList<scalar>(meshRows.m, rows))
+            << List<scalar>(UIndirectList<scalar>(meshRows.N, rows))
+            << List<label>(UIndirectList<label>(meshRows.typeId, rows))
+            << List<label>(UIndirectList<label>(meshRows.globalId, rows))
+            << List<vector>(UIndirectList<vector>(meshRows.fExt, rows))
+            << List<vector>(UIndirectList<vector>(meshRows.fContact, rows))
+            << List<vector>(UIndirectList<vector>(meshRows.tContact, rows))
+            << List<labelList>(UIndirectList<labelList>(keys, rows))
+            << List<List<vector>>(UIndirectList<List<vector>>(xi, rows));
+    }
+    labelList recvSizes;
+    pBufs.finishedSends(recvSizes);
+
+    dem_.clear();
+    dem_.contactForcesValid = meshRows.contactForcesValid;
+    DynamicList<label> fromProc;
+    DynamicList<label> fromRow;
+
+    // In processor order, each in its mesh order: a deterministic order
+    // (the engine's results do not depend on it anyway)
+    forAll(recvSizes, proci)
+    {
+        if (!recvSizes[proci])
+        {
+            continue;
+        }
+        UIPstream is(proci, pBufs);
+        const labelList rows(is);
+        const List<point> x(is);
+        const List<vector> v(is);
+        const List<vector> omega(is);
+        const List<scalar> r(is);
+        const List<scalar> m(is);
+        const List<scalar> N(is);
+        const labelList typeId(is);
+        const labelList globalId(is);
+        const List<vector> fExt(is);
+        const List<vector> fContact(is);
+        const List<vector> tContact(is);
+        const List<labelList> rowKeys(is);
+        const List<List<vector>> rowXi(is);
+
+        forAll(rows, k)
+        {
+            const label row = dem_.append
+            (
+                x[k], v[k], omega[k], r[k], m[k], N[k], typeId[k],
+                globalId[k]
+            );
+            dem_.fExt[row] = fExt[k];
+            dem_.fContact[row] = fContact[k];
+            dem_.tContact[row] = tContact[k];
+            fromProc.append(proci);
+            fromRow.append(rows[k]);
+
+            // The parcel's running contacts, from its mesh owner's copy
+            // (its previous DEM owner wrote them there)
+            engine_.setHistory(globalId[k], rowKeys[k], rowXi[k]);
+        }
+    }
+    fromProc_.transfer(fromProc);
+    fromRow_.transfer(fromRow);
+
+    // Too uneven: a new partition at the next fluid step
+    label nMost = dem_.size();
+    label nAll = dem_.size();
+    reduce(nMost, maxOp<label>());
+    reduce(nAll, sumOp<label>());
+    if (nAll > 0 && scalar(nMost)*nProcs/nAll > maxImbalance_)
+    {
+        repartition_ = true;
+    }
+
+    halo_.build(dem_, reach_, &engine_);
+}
+
+
+void Foam::demPartition::collect
+(
+    demState& meshRows,
+    labelList& agglomerateIds,
+    List<labelList>& keys,
+    List<List<vector>>& xi
+)
+{
+    const label nProcs = Pstream::nProcs();
+    const label nOwned = dem_.owned();
+
+    List<DynamicList<label>> rowsTo(nProcs);
+    for (label k = 0; k < nOwned; ++k)
+    {
+        rowsTo[fromProc_[k]].append(k);
+    }
+
+    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    DynamicList<label> rowKeys;
+    DynamicList<vector> rowXi;
+    forAll(rowsTo, proci)
+    {
+        const labelList rows(rowsTo[proci]);
+        if (rows.empty())
+        {
+            continue;
+        }
+        List<labelList> allKeys(rows.size());
+        List<List<vector>> allXi(rows.size());
+        forAll(rows, j)
+        {
+            rowKeys.clear();
+            rowXi.clear();
+            engine_.history(dem_.globalId[rows[j]], rowKeys, rowXi);
+            allKeys[j] = rowKeys;
+            allXi[j] = rowXi;
+        }
+        UOPstream os(proci, pBufs);
+        os  << labelList(UIndirectList<label>(fromRow_, rows))
+            << List<point>(UIndirectList<point>(dem_.x, rows))
+            << List<vector>(UIndirectList<vector>(dem_.v, rows))
+            << List<vector>(UIndirectList<vector>(dem_.omega, rows))
+            << List<vector>(UIndirectList<vector>(dem_.fContact, rows))
+            << List<vector>(UIndirectList<vector>(dem_.tContact, rows))
+            << labelList(UIndirectList<label>(agglomerateIds_, rows))
+            << allKeys << allXi;
+    }
+    labelList recvSizes;
+    pBufs.finishedSends(recvSizes);
+
+    const label nMesh = meshRows.owned();
+    agglomerateIds.setSize(nMesh);
+    keys.setSize(nMesh);
+    xi.setSize(nMesh);
+    label nBack = 0;
+    forAll(recvSizes, proci)
+    {
+        if (!recvSizes[proci])
+        {
+            continue;
+        }
+        UIPstream is(proci, pBufs);
+        const labelList rows(is);
+        const List<point> x(is);
+        const List<vector> v(is);
+        const List<vector> omega(is);
+        const List<vector> fContact(is);
+        const List<vector> tContact(is);
+        const labelList aggIds(is);
+        List<labelList> allKeys(is);
+        List<List<vector>> allXi(is);
+        forAll(rows, j)
+        {
+            const label i = rows[j];
+            meshRows.x[i] = x[j];
+            meshRows.v[i] = v[j];
+            meshRows.omega[i] = omega[j];
+            meshRows.fContact[i] = fContact[j];
+            meshRows.tContact[i] = tContact[j];
+            agglomerateIds[i] = aggIds[j];
+            keys[i].transfer(allKeys[j]);
+            xi[i].transfer(allXi[j]);
+        }
+        nBack += rows.size();
+    }
+
+    if (nBack != nMesh)
+    {
+        FatalErrorInFunction
+            << nMesh << " parcels on this processor went to the DEM, "
+            << nBack << " came back" << exit(FatalError);
+    }
+}
+
+
+void Foam::demPartition::evolve
+(
+    demState& s,
+    const scalar Dt,
+    const vector& g,
+    demObserver* obs
+)
+{
+    distribute(s);
+
+    if (checkWhen_.size())
+    {
+        engine_.checkStartState(dem_, checkWhen_);
+        checkWhen_.clear();
+    }
+
+    engine_.evolve(dem_, Dt, g, obs);
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,230 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+-------------------------------------------------------------------------------
+Description
+    demEngine::checkStartState: the parcels a run starts from or has just
+    injected, before any force is evaluated. A contact law assumes the
+    parcels came together at a finite speed; a start inside another parcel
+    or a wall releases the stored elastic energy at once (two API parcels
+    overlapping by half a radius fly apart at ~50 m/s), and coincident
+    centres have no contact normal at all (0/0 in the pair force).
+
+\*---------------------------------------------------------------------------*/
+
+#include "demEngine.H"
+#include "HashTable.H"
+#include "FixedList.H"
+#include "Pstream.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    //- The worst start overlap seen: ratio delta/R*, the two globalIds
+    //  (the second -1 for a wall) and the wall's index
+    struct startOverlap
+    {
+        scalar ratio = 0;
+        label idA = -1;
+        label idB = -1;
+        label wall = -1;
+        label count = 0;
+    };
+
+    static Ostream& operator<<(Ostream& os, const startOverlap& o)
+    {
+        return os << o.ratio << ' ' << o.idA << ' ' << o.idB << ' '
+            << o.wall << ' ' << o.count;
+    }
+
+    static Istream& operator>>(Istream& is, startOverlap& o)
+    {
+        return is >> o.ratio >> o.idA >> o.idB >> o.wall >> o.count;
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::demEngine::checkStartState(const demState& s, const word& when)
+{
+    const label nOwned = s.owned();
+
+    // A parcel with no size, no mass or a non-finite state cannot enter
+    // any force law: name it
+    for (label p = 0; p < nOwned; ++p)
+    {
+        const bool finite =
+            std::isfinite(s.x[p].x()) && std::isfinite(s.x[p].y())
+         && std::isfinite(s.x[p].z()) && std::isfinite(magSqr(s.v[p]))
+         && std::isfinite(magSqr(s.omega[p]));
+        if (!(s.r[p] > 0) || !(s.m[p] > 0) || !finite)
+        {
+            FatalErrorInFunction
+                << "Parcel " << s.globalId[p] << " (" << when << ") has "
+                << "diameter " << 2*s.r[p] << " m, mass " << s.m[p]
+                << " kg, position " << s.x[p] << ", velocity " << s.v[p]
+                << ", spin " << s.omega[p] << nl
+                << "    every parcel needs d > 0, a mass > 0 and a finite"
+                << " state: correct its entry in the injector's list or"
+                << " the time directory's lagrangian fields"
+                << exit(FatalError);
+        }
+    }
+
+    scalar rMax = 0;
+    forAll(s.r, p)
+    {
+        rMax = max(rMax, s.r[p]);
+    }
+
+    // Pairs: a grid of cells 2 rMax wide, so an overlapping pair lies in
+    // neighbouring cells
+    startOverlap warnPair, worst;
+    const scalar h = 2*max(rMax, VSMALL);
+    typedef FixedList<label, 3> cellKey;
+    HashTable<DynamicList<label>, cellKey, cellKey::Hash<>> grid(2*s.size());
+    auto keyOf = [h](const point& x)
+    {
+        cellKey k;
+        k[0] = label(std::floor(x.x()/h));
+        k[1] = label(std::floor(x.y()/h));
+        k[2] = label(std::floor(x.z()/h));
+        return k;
+    };
+    forAll(s.x, p)
+    {
+        grid(keyOf(s.x[p])).append(p);
+    }
+
+    for (label i = 0; i < nOwned; ++i)
+    {
+        const cellKey ki = keyOf(s.x[i]);
+        cellKey k;
+        for (k[0] = ki[0] - 1; k[0] <= ki[0] + 1; ++k[0])
+        for (k[1] = ki[1] - 1; k[1] <= ki[1] + 1; ++k[1])
+        for (k[2] = ki[2] - 1; k[2] <= ki[2] + 1; ++k[2])
+        {
+            const auto iter = grid.cfind(k);
+            if (!iter.found())
+            {
+                continue;
+            }
+            for (const label j : *iter)
+            {
+                // Each pair once: by globalId (a pair with a halo copy is
+                // seen by both owners, which report the same ids)
+                if (s.globalId[j] <= s.globalId[i])
+                {
+                    continue;
+                }
+                const scalar rSum = s.r[i] + s.r[j];
+                const scalar dist = mag(s.x[i] - s.x[j]);
+                if (dist >= rSum)
+                {
+                    continue;
+                }
+                const scalar Rstar = s.r[i]*s.r[j]/rSum;
+                const scalar ratio = (rSum - dist)/Rstar;
+                if (ratio > startOverlapWarn_)
+                {
+                    ++worst.count;
+                }
+                if (ratio > worst.ratio)
+                {
+                    worst.ratio = ratio;
+                    worst.idA = s.globalId[i];
+                    worst.idB = s.globalId[j];
+                    worst.wall = -1;
+                }
+            }
+        }
+    }
+
+    // Walls: the overlap of a sphere with a wall is r - distance (R* = r);
+    // a centre on the wall gives 1
+    if (walls_.size())
+    {
+        prepareWalls(rMax);
+    }
+    DynamicList<demWallContact> contacts;
+    for (label p = 0; p < nOwned; ++p)
+    {
+        forAll(walls_, w)
+        {
+            contacts.clear();
+            walls_[w].findContacts(s.x[p], s.r[p], contacts);
+            for (const demWallContact& c : contacts)
+            {
+                const scalar ratio = (s.r[p] - c.distance)/s.r[p];
+                if (ratio > startOverlapWarn_)
+                {
+                    ++worst.count;
+                }
+                if (ratio > worst.ratio)
+                {
+                    worst.ratio = ratio;
+                    worst.idA = s.globalId[p];
+                    worst.idB = -1;
+                    worst.wall = w;
+                }
+            }
+        }
+    }
+
+    // The worst over all processors, the same decision everywhere
+    List<startOverlap> all(Pstream::nProcs());
+    all[Pstream::myProcNo()] = worst;
+    Pstream::gatherList(all);
+    Pstream::scatterList(all);
+    label nOver = 0;
+    worst = startOverlap();
+    for (const startOverlap& o : all)
+    {
+        nOver += o.count;
+        if (o.ratio > worst.ratio)
+        {
+            worst = o;
+        }
+    }
+
+    if (worst.ratio <= startOverlapWarn_)
+    {
+        return;
+    }
+
+    const std::string what
+    (
+        worst.wall < 0
+      ? "parcels " + Foam::name(worst.idA) + " and " + Foam::name(worst.idB)
+      : "parcel " + Foam::name(worst.idA) + " and wall "
+      + walls_[worst.wall].name()
+    );
+
+    if (worst.ratio > startOverlapRefuse_)
+    {
+        FatalErrorInFunction
+            << "The parcels " << when << " overlap: " << nOver
+            << " contacts above " << startOverlapWarn_ << " R*, the largest "
+            << worst.ratio << " R* (" << what.c_str() << ")"
+            << (worst.ratio > 1 ? "; centres inside each other" : "")
+            << ". A contact starting this deep releases its elastic"
+            << " energy at once (parcels fly apart at up to tens of m/s)."
+            << nl
+            << "    Move or remove those parcels (injector positions, packing"
+            << " region away from the walls), or, for a packed start that"
+            << " is meant to relax, raise dem/startOverlap/refuse above "
+            << worst.ratio << " (default 0.1; warn "
+            << startOverlapWarn_ << ")"
+            << exit(FatalError);
+    }
+
+    WarningInFunction
+        << "The parcels " << when << " overlap: " << nOver << " contacts"
+        << " above " << startOverlapWarn_ << " R*, the largest "
+        << worst.ratio << " R* (" << what.c_str() << "); accepted up to"
+        << " dem/startOverlap/refuse " << startOverlapRefuse_ << endl;
+}
+
+
+// ************************************************************************* //
