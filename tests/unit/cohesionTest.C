@@ -84,7 +84,7 @@ std::string deck
         << "  carrier { diameter " << 2*rCarrier << "; density " << rho
         << "; youngsModulus 5e8; poissonsRatio 0.35; }\n"
         << "  api { diameter " << 2*rApi << "; density " << rho
-        << "; youngsModulus 5e8; poissonsRatio 0.35; N " << N << "; }\n"
+        << "; youngsModulus 5e8; poissonsRatio 0.35; N " << N << "; api true; }\n"
         << "  wall { youngsModulus 5e8; poissonsRatio 0.35; }\n"
         << "}\n"
         << "pairs { default { restitution " << e << "; friction " << mu

@@ -51,7 +51,7 @@ dictionary rollingDeck
         << "types {\n"
         << "  ball { diameter " << d << "; density " << rho
         << "; youngsModulus " << Y << "; poissonsRatio " << nu
-        << "; N " << N << "; }\n"
+        << "; N " << N << "; api true; }\n"
         << "  wall { youngsModulus " << Y << "; poissonsRatio " << nu
         << "; }\n"
         << "}\n"

@@ -47,7 +47,7 @@ std::string deck
     os  << "timeStep " << dt << ";\n"
         << "types {\n"
         << "  api { diameter " << dApi << "; density " << rhoApi
-        << "; youngsModulus 5e8; poissonsRatio 0.35; N " << N << "; }\n"
+        << "; youngsModulus 5e8; poissonsRatio 0.35; N " << N << "; api true; }\n"
         << "  wall { youngsModulus 5e8; poissonsRatio 0.35; }\n"
         << "}\n"
         << "pairs { default { restitution " << e << "; friction " << mu

@@ -212,7 +212,9 @@ Foam::demPartition::demPartition
     keys_(nullptr),
     xi_(nullptr),
     reach_(0),
-    checkWhen_()
+    checkWhen_(),
+    vecCols_(),
+    scaCols_()
 {
     const dictionary lbDict(dict.subOrEmptyDict("loadBalance"));
     maxImbalance_ = lbDict.getOrDefault<scalar>("maxImbalance", maxImbalance_);
@@ -264,7 +266,12 @@ void Foam::demPartition::setInputs
 }
 
 
-void Foam::demPartition::distribute(const demState& meshRows)
+void Foam::demPartition::distribute
+(
+    const demState& meshRows,
+    const List<vectorField>& vecIn,
+    const List<scalarField>& scaIn
+)
 {
     if (repartition_)
     {
@@ -305,6 +312,14 @@ void Foam::demPartition::distribute(const demState& meshRows)
             << List<vector>(UIndirectList<vector>(meshRows.tContact, rows))
             << List<labelList>(UIndirectList<labelList>(keys, rows))
             << List<List<vector>>(UIndirectList<List<vector>>(xi, rows));
+        for (const vectorField& c : vecIn)
+        {
+            os << vectorField(UIndirectList<vector>(c, rows));
+        }
+        for (const scalarField& c : scaIn)
+        {
+            os << scalarField(UIndirectList<scalar>(c, rows));
+        }
     }
     labelList recvSizes;
     pBufs.finishedSends(recvSizes);
@@ -313,6 +328,8 @@ void Foam::demPartition::distribute(const demState& meshRows)
     dem_.contactForcesValid = meshRows.contactForcesValid;
     DynamicList<label> fromProc;
     DynamicList<label> fromRow;
+    List<DynamicList<vector>> vecCols(vecIn.size());
+    List<DynamicList<scalar>> scaCols(scaIn.size());
 
     // In processor order, each in its mesh order: a deterministic order
     // (the engine's results do not depend on it anyway)
@@ -337,6 +354,14 @@ void Foam::demPartition::distribute(const demState& meshRows)
         const List<vector> tContact(is);
         const List<labelList> rowKeys(is);
         const List<List<vector>> rowXi(is);
+        forAll(vecCols, c)
+        {
+            vecCols[c].append(vectorField(is));
+        }
+        forAll(scaCols, c)
+        {
+            scaCols[c].append(scalarField(is));
+        }
 
         forAll(rows, k)
         {
@@ -358,6 +383,16 @@ void Foam::demPartition::distribute(const demState& meshRows)
     }
     fromProc_.transfer(fromProc);
     fromRow_.transfer(fromRow);
+    vecCols_.setSize(vecCols.size());
+    forAll(vecCols, c)
+    {
+        vecCols_[c].transfer(vecCols[c]);
+    }
+    scaCols_.setSize(scaCols.size());
+    forAll(scaCols, c)
+    {
+        scaCols_[c].transfer(scaCols[c]);
+    }
 
     // Too uneven: a new partition at the next fluid step
     label nMost = dem_.size();
@@ -370,6 +405,12 @@ void Foam::demPartition::distribute(const demState& meshRows)
     }
 
     halo_.build(dem_, reach_, &engine_);
+
+    if (checkWhen_.size())
+    {
+        engine_.checkStartState(dem_, checkWhen_);
+        checkWhen_.clear();
+    }
 }
 
 
@@ -378,7 +419,11 @@ void Foam::demPartition::collect
     demState& meshRows,
     labelList& agglomerateIds,
     List<labelList>& keys,
-    List<List<vector>>& xi
+    List<List<vector>>& xi,
+    const List<vectorField>& vecOut,
+    const List<scalarField>& scaOut,
+    List<vectorField>& vecBack,
+    List<scalarField>& scaBack
 )
 {
     const label nProcs = Pstream::nProcs();
@@ -419,6 +464,14 @@ void Foam::demPartition::collect
             << List<vector>(UIndirectList<vector>(dem_.tContact, rows))
             << labelList(UIndirectList<label>(agglomerateIds_, rows))
             << allKeys << allXi;
+        for (const vectorField& c : vecOut)
+        {
+            os << vectorField(UIndirectList<vector>(c, rows));
+        }
+        for (const scalarField& c : scaOut)
+        {
+            os << scalarField(UIndirectList<scalar>(c, rows));
+        }
     }
     labelList recvSizes;
     pBufs.finishedSends(recvSizes);
@@ -427,6 +480,16 @@ void Foam::demPartition::collect
     agglomerateIds.setSize(nMesh);
     keys.setSize(nMesh);
     xi.setSize(nMesh);
+    vecBack.setSize(vecOut.size());
+    for (vectorField& c : vecBack)
+    {
+        c.setSize(nMesh);
+    }
+    scaBack.setSize(scaOut.size());
+    for (scalarField& c : scaBack)
+    {
+        c.setSize(nMesh);
+    }
     label nBack = 0;
     forAll(recvSizes, proci)
     {
@@ -444,6 +507,22 @@ void Foam::demPartition::collect
         const labelList aggIds(is);
         List<labelList> allKeys(is);
         List<List<vector>> allXi(is);
+        forAll(vecBack, c)
+        {
+            const vectorField vals(is);
+            forAll(rows, j)
+            {
+                vecBack[c][rows[j]] = vals[j];
+            }
+        }
+        forAll(scaBack, c)
+        {
+            const scalarField vals(is);
+            forAll(rows, j)
+            {
+                scaBack[c][rows[j]] = vals[j];
+            }
+        }
         forAll(rows, j)
         {
             const label i = rows[j];
@@ -477,12 +556,6 @@ void Foam::demPartition::evolve
 )
 {
     distribute(s);
-
-    if (checkWhen_.size())
-    {
-        engine_.checkStartState(dem_, checkWhen_);
-        checkWhen_.clear();
-    }
 
     engine_.evolve(dem_, Dt, g, obs);
 }

@@ -12,6 +12,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "demEngine.H"
+#include <sstream>
 #include "HashTable.H"
 #include "FixedList.H"
 #include "Pstream.H"
@@ -29,17 +30,29 @@ namespace Foam
         label idB = -1;
         label wall = -1;
         label count = 0;
+        //- 1 if a centre lies inside the other sphere (or on the wall)
+        label inside = 0;
     };
+
+    //- A ratio to 3 digits: what the user needs to read
+    static std::string threeDigits(const scalar x)
+    {
+        std::ostringstream os;
+        os.precision(3);
+        os << x;
+        return os.str();
+    }
 
     static Ostream& operator<<(Ostream& os, const startOverlap& o)
     {
         return os << o.ratio << ' ' << o.idA << ' ' << o.idB << ' '
-            << o.wall << ' ' << o.count;
+            << o.wall << ' ' << o.count << ' ' << o.inside;
     }
 
     static Istream& operator>>(Istream& is, startOverlap& o)
     {
-        return is >> o.ratio >> o.idA >> o.idB >> o.wall >> o.count;
+        return is >> o.ratio >> o.idA >> o.idB >> o.wall >> o.count
+            >> o.inside;
     }
 }
 
@@ -136,6 +149,7 @@ void Foam::demEngine::checkStartState(const demState& s, const word& when)
                     worst.idA = s.globalId[i];
                     worst.idB = s.globalId[j];
                     worst.wall = -1;
+                    worst.inside = dist < max(s.r[i], s.r[j]);
                 }
             }
         }
@@ -167,6 +181,7 @@ void Foam::demEngine::checkStartState(const demState& s, const word& when)
                     worst.idA = s.globalId[p];
                     worst.idB = -1;
                     worst.wall = w;
+                    worst.inside = c.distance <= 0;
                 }
             }
         }
@@ -206,15 +221,21 @@ void Foam::demEngine::checkStartState(const demState& s, const word& when)
         FatalErrorInFunction
             << "The parcels " << when << " overlap: " << nOver
             << " contacts above " << startOverlapWarn_ << " R*, the largest "
-            << worst.ratio << " R* (" << what.c_str() << ")"
-            << (worst.ratio > 1 ? "; centres inside each other" : "")
+            << threeDigits(worst.ratio).c_str() << " R* (" << what.c_str()
+            << ")"
+            << (
+                   worst.inside
+                 ? (worst.wall < 0 ? "; a centre inside the other parcel"
+                                   : "; its centre on the wall")
+                 : ""
+               )
             << ". A contact starting this deep releases its elastic"
             << " energy at once (parcels fly apart at up to tens of m/s)."
             << nl
             << "    Move or remove those parcels (injector positions, packing"
             << " region away from the walls), or, for a packed start that"
             << " is meant to relax, raise dem/startOverlap/refuse above "
-            << worst.ratio << " (default 0.1; warn "
+            << threeDigits(worst.ratio).c_str() << " (default 0.1; warn "
             << startOverlapWarn_ << ")"
             << exit(FatalError);
     }
@@ -222,7 +243,8 @@ void Foam::demEngine::checkStartState(const demState& s, const word& when)
     WarningInFunction
         << "The parcels " << when << " overlap: " << nOver << " contacts"
         << " above " << startOverlapWarn_ << " R*, the largest "
-        << worst.ratio << " R* (" << what.c_str() << "); accepted up to"
+        << threeDigits(worst.ratio).c_str() << " R* (" << what.c_str()
+        << "); accepted up to"
         << " dem/startOverlap/refuse " << startOverlapRefuse_ << endl;
 }
 

@@ -56,22 +56,7 @@ void Foam::DPICloud<CloudType>::setModels()
     // balanced, dem/loadBalance rcb, the default) or on the mesh owners
     // with a halo of the mesh sub-domains' boxes
     const dictionary& demDict = props.subDict("dem");
-    const bool subStepForces =
-        coupling_->active()
-     && coupling_->update() != dpiFluidCoupling::updateMode::held;
-    if (demPartition::selected(demDict) && subStepForces)
-    {
-        // The fluid forces of subStep are evaluated on the mesh side at
-        // every sub-step, from the mesh owners' rows: not yet available on
-        // the DEM's own partition
-        IOWarningInFunction(demDict)
-            << "dem/loadBalance rcb (the default in parallel) needs"
-            << " fluidCoupling/dragUpdate held; with subStep the DEM runs on"
-            << " the mesh owners, not load balanced. Set loadBalance"
-            << " { type none; } in dictionary " << demDict.name()
-            << " to say so and silence this warning." << endl;
-    }
-    if (demPartition::selected(demDict) && !subStepForces)
+    if (demPartition::selected(demDict))
     {
         partition_.reset(new demPartition(demDict, engine_(), this->mesh()));
     }
@@ -802,11 +787,61 @@ void Foam::DPICloud<CloudType>::motion
         startChecked_ = true;
     }
 
-    demStepper* stepper = engine_.get();
+    demObserver* obs = observer_;
+    if (!obs && trace_.valid())
+    {
+        trace_->beginStep(t1 - Dt, engine_->timeStep());
+        obs = trace_.get();
+    }
+
+    const vector g(this->g().value());
+
     if (partition_.valid())
     {
+        // The DEM on its own partition: the rows (with their fluid forces,
+        // or with the frozen fluid states when the forces follow every
+        // sub-step) go to their DEM owners and back
         partition_->setInputs(rowKeys_, rowXi_, haloReach(Dt), checkWhen);
-        stepper = partition_.get();
+        List<vectorField> vecOut, vecBack;
+        List<scalarField> scaOut, scaBack;
+        if (coupling_->subStepForces())
+        {
+            coupling_->sample(*this, state_);
+            List<vectorField> vecIn;
+            List<scalarField> scaIn;
+            coupling_->packStates(vecIn, scaIn);
+            partition_->distribute(state_, vecIn, scaIn);
+            coupling_->subStepRows
+            (
+                engine_(), partition_->state(), partition_->state().owned(),
+                partition_->vectorColumns(), partition_->scalarColumns(),
+                vecOut, scaOut, Dt, g, obs
+            );
+        }
+        else
+        {
+            // held forces set here, the DEM sub-steps at the DEM owners
+            coupling_->evolve(*this, *partition_, state_, Dt, g, obs);
+        }
+
+        // Labelled where the DEM rows are, then everything back to the
+        // mesh owners
+        agglomerates_->update
+        (
+            partition_->state(),
+            engine_->materials(),
+            partition_->agglomerateIds(),
+            &partition_->halo()
+        );
+        partition_->collect
+        (
+            state_, agglomerateIds_, rowKeys_, rowXi_,
+            vecOut, scaOut, vecBack, scaBack
+        );
+        if (coupling_->subStepForces())
+        {
+            coupling_->finishSubSteps(*this, state_, vecBack, scaBack);
+        }
     }
     else
     {
@@ -822,34 +857,11 @@ void Foam::DPICloud<CloudType>::motion
         {
             engine_->checkStartState(state_, checkWhen);
         }
-    }
 
-    demObserver* obs = observer_;
-    if (!obs && trace_.valid())
-    {
-        trace_->beginStep(t1 - Dt, engine_->timeStep());
-        obs = trace_.get();
-    }
+        // DEM sub-steps with the fluid forces in state_.fExt, their
+        // reaction into UTrans/UCoeff; only engine_->evolve without forces
+        coupling_->evolve(*this, engine_(), state_, Dt, g, obs);
 
-    // DEM sub-steps with the fluid forces in state_.fExt, their reaction
-    // into UTrans/UCoeff (issue 5); only engine_->evolve without forces
-    coupling_->evolve(*this, *stepper, state_, Dt, this->g().value(), obs);
-
-    if (partition_.valid())
-    {
-        // Labelled where the DEM rows are, then everything back to the
-        // mesh owners
-        agglomerates_->update
-        (
-            partition_->state(),
-            engine_->materials(),
-            partition_->agglomerateIds(),
-            &partition_->halo()
-        );
-        partition_->collect(state_, agglomerateIds_, rowKeys_, rowXi_);
-    }
-    else
-    {
         agglomerates_->update
         (
             state_,

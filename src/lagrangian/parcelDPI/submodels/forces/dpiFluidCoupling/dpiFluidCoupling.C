@@ -125,37 +125,46 @@ void Foam::dpiFluidCoupling::checkTimeStep(const demMaterials& mat) const
 }
 
 
+void Foam::dpiFluidCoupling::rowForce
+(
+    const dpiFluidForce::fluidState& fl,
+    const vector& v,
+    const scalar d,
+    const scalar N,
+    vector& F,
+    vector& Fc,
+    scalar& Spc
+) const
+{
+    F = Zero;
+    Fc = Zero;
+    Spc = 0;
+
+    forAll(forces_, k)
+    {
+        const dpiFluidForce::forceSuSp f = forces_[k].force(fl, v, d, N);
+
+        const vector Fk(f.Su + f.Sp*(fl.U + fl.Uturb - v));
+        F += Fk;
+
+        if (forces_[k].coupled())
+        {
+            Fc += Fk;
+            Spc += f.Sp;
+        }
+    }
+}
+
+
 void Foam::dpiFluidCoupling::setForces(demState& s)
 {
     for (label i = 0; i < nRows_; ++i)
     {
-        const dpiFluidForce::fluidState& fl = fluid_[i];
-        const vector& v = s.v[i];
-        const scalar d = 2*s.r[i];
-        const scalar N = s.N[i];
-
-        vector F(Zero);
-        vector Fc(Zero);
-        scalar Spc = 0;
-
-        forAll(forces_, k)
-        {
-            const dpiFluidForce::forceSuSp f =
-                forces_[k].force(fl, v, d, N);
-
-            const vector Fk(f.Su + f.Sp*(fl.U + fl.Uturb - v));
-            F += Fk;
-
-            if (forces_[k].coupled())
-            {
-                Fc += Fk;
-                Spc += f.Sp;
-            }
-        }
-
-        s.fExt[i] = F;
-        fCoupled_[i] = Fc;
-        spCoupled_[i] = Spc;
+        rowForce
+        (
+            fluid_[i], s.v[i], 2*s.r[i], s.N[i],
+            s.fExt[i], fCoupled_[i], spCoupled_[i]
+        );
     }
 }
 
@@ -179,6 +188,117 @@ void Foam::dpiFluidCoupling::advanceDispersion
         (
             fluid_[i].Uturb, sgs_[i], dt, s.globalId[i], step, sub
         );
+    }
+}
+
+
+void Foam::dpiFluidCoupling::packStates
+(
+    List<vectorField>& vec,
+    List<scalarField>& sca
+) const
+{
+    vec.setSize(3);
+    sca.setSize(5);
+    for (vectorField& c : vec)
+    {
+        c.setSize(nRows_);
+    }
+    for (scalarField& c : sca)
+    {
+        c.setSize(nRows_, 0);
+    }
+    for (label i = 0; i < nRows_; ++i)
+    {
+        const dpiFluidForce::fluidState& fl = fluid_[i];
+        vec[0][i] = fl.U;
+        vec[1][i] = fl.Uturb;
+        vec[2][i] = fl.gradp;
+        sca[0][i] = fl.alpha;
+        sca[1][i] = fl.rho;
+        sca[2][i] = fl.nu;
+        if (dispersion_.valid())
+        {
+            sca[3][i] = sgs_[i].k;
+            sca[4][i] = sgs_[i].tau;
+        }
+    }
+}
+
+
+void Foam::dpiFluidCoupling::subStepRows
+(
+    demStepper& stepper,
+    demState& s,
+    const label n,
+    const List<vectorField>& vecIn,
+    const List<scalarField>& scaIn,
+    List<vectorField>& vecOut,
+    List<scalarField>& scaOut,
+    const scalar Dt,
+    const vector& g,
+    demObserver* obs
+) const
+{
+    const scalar dt = stepper.timeStep();
+    const label nSub = label(Dt/dt + 0.5);
+    if (nSub < 1 || mag(Dt/dt - nSub) > 1e-6)
+    {
+        FatalErrorInFunction
+            << "The fluid time step " << Dt << " s is not an integer "
+            << "multiple of the DEM timeStep " << dt << " s"
+            << exit(FatalError);
+    }
+
+    List<dpiFluidForce::fluidState> fl(n);
+    List<dpiTurbulentDispersion::sgs> sg(n);
+    for (label i = 0; i < n; ++i)
+    {
+        fl[i].U = vecIn[0][i];
+        fl[i].Uturb = vecIn[1][i];
+        fl[i].gradp = vecIn[2][i];
+        fl[i].alpha = scaIn[0][i];
+        fl[i].rho = scaIn[1][i];
+        fl[i].nu = scaIn[2][i];
+        sg[i].k = scaIn[3][i];
+        sg[i].tau = scaIn[4][i];
+    }
+
+    // Out: the coupled impulse sum dt Fc and u* (vectors), sum dt Sp
+    vecOut.setSize(2);
+    vecOut[0].setSize(n, Zero);
+    vecOut[1].setSize(n);
+    scaOut.setSize(1);
+    scaOut[0].setSize(n, 0);
+    vectorField& impulse = vecOut[0];
+    scalarField& spImpulse = scaOut[0];
+
+    const label step = mesh_.time().timeIndex();
+    vector Fc;
+    scalar Spc;
+    for (label sub = 0; sub < nSub; ++sub)
+    {
+        for (label i = 0; i < n; ++i)
+        {
+            if (dispersion_.valid())
+            {
+                fl[i].Uturb = dispersion_->update
+                (
+                    fl[i].Uturb, sg[i], dt, s.globalId[i], step, sub + 1
+                );
+            }
+            rowForce(fl[i], s.v[i], 2*s.r[i], s.N[i], s.fExt[i], Fc, Spc);
+            impulse[i] += dt*Fc;
+            spImpulse[i] += dt*Spc;
+        }
+
+        stepper.evolve(s, dt, g, obs);
+    }
+
+    for (label i = 0; i < n; ++i)
+    {
+        vecOut[1][i] = fl[i].Uturb;
+        s.fExt[i] = Zero;
     }
 }
 

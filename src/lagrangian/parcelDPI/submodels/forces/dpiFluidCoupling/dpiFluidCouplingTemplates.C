@@ -14,6 +14,7 @@ void Foam::dpiFluidCoupling::sample(const CloudType& cloud, const demState& s)
 {
     typedef typename CloudType::parcelType parcelType;
 
+    gasMomentum_ = Zero;
     nRows_ = cloud.size();
     sampleTimeIndex_ = mesh_.time().timeIndex();
 
@@ -340,6 +341,58 @@ void Foam::dpiFluidCoupling::correctParcels
 
 
 template<class CloudType>
+void Foam::dpiFluidCoupling::finishSubSteps
+(
+    CloudType& cloud,
+    demState& s,
+    const List<vectorField>& vecOut,
+    const List<scalarField>& scaOut
+)
+{
+    const vectorField& impulse = vecOut[0];
+    const scalarField& spImp = scaOut[0];
+
+    for (label i = 0; i < nRows_; ++i)
+    {
+        fluid_[i].Uturb = vecOut[1][i];
+        gasMomentum_ -= impulse[i];
+    }
+
+    if (cloud.solution().coupled())
+    {
+        // The fluid step's impulse of each parcel, spread as addSources
+        // spreads one sub-step's
+        volVectorField::Internal& UTrans = cloud.UTrans();
+        volScalarField::Internal& UCoeff = cloud.UCoeff();
+        for (label i = 0; i < nRows_; ++i)
+        {
+            const vector dU(-impulse[i]);
+            const scalar dC(spImp[i]);
+            for (label k = spreadStart_[i]; k < spreadStart_[i+1]; ++k)
+            {
+                UTrans[spreadCells_[k]] += spreadWeights_[k]*dU;
+                UCoeff[spreadCells_[k]] += spreadWeights_[k]*dC;
+            }
+            spImpulse_[i] += dC;
+        }
+
+        const scalar wPt = 1.0/dpiVoidFraction::nPoints;
+        forAll(remoteRow_, k)
+        {
+            if (remote_.found(k))
+            {
+                const label i = remoteRow_[k];
+                remoteUTrans_[k] -= wPt*impulse[i];
+                remoteUCoeff_[k] += wPt*spImp[i];
+            }
+        }
+    }
+
+    endFluidStep(cloud, s);
+}
+
+
+template<class CloudType>
 void Foam::dpiFluidCoupling::evolve
 (
     CloudType& cloud,
@@ -366,29 +419,26 @@ void Foam::dpiFluidCoupling::evolve
         setForces(s);
         engine.evolve(s, Dt, g, obs);
         addSources(cloud, Dt);
+        endFluidStep(cloud, s);
     }
     else
     {
-        const scalar dt = engine.timeStep();
-        const label nSub = label(Dt/dt + 0.5);
-
-        if (nSub < 1 || mag(Dt/dt - nSub) > 1e-6)
-        {
-            FatalErrorInFunction
-                << "The fluid time step " << Dt << " s is not an integer "
-                << "multiple of the DEM timeStep " << dt << " s"
-                << exit(FatalError);
-        }
-
-        for (label step = 0; step < nSub; ++step)
-        {
-            advanceDispersion(s, dt, step + 1);
-            setForces(s);
-            engine.evolve(s, dt, g, obs);
-            addSources(cloud, dt);
-        }
+        // The per-row loop (the same arithmetic wherever the rows run)
+        List<vectorField> vecIn, vecOut;
+        List<scalarField> scaIn, scaOut;
+        packStates(vecIn, scaIn);
+        subStepRows
+        (
+            engine, s, nRows_, vecIn, scaIn, vecOut, scaOut, Dt, g, obs
+        );
+        finishSubSteps(cloud, s, vecOut, scaOut);
     }
+}
 
+
+template<class CloudType>
+void Foam::dpiFluidCoupling::endFluidStep(CloudType& cloud, demState& s)
+{
     sendRemoteSources(cloud);
 
     // Forces are not held into the next fluid step
