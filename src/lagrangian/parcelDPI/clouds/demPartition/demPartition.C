@@ -298,16 +298,9 @@ void Foam::demPartition::distribute
             continue;
         }
         UOPstream os(proci, pBufs);
-        os  << rows
-            << List<point>(UIndirectList<point>(meshRows.x, rows))
-            << List<vector>(UIndirectList<vector>(meshRows.v, rows))
-            << List<vector>(UIndirectList<vector>(meshRows.omega, rows))
-            << List<scalar>(UIndirectList<scalar>(meshRows.r, rows))
-            << List<scalar>(UIndirectList<scalar>(meshRows.m, rows))
-            << List<scalar>(UIndirectList<scalar>(meshRows.N, rows))
-            << List<label>(UIndirectList<label>(meshRows.typeId, rows))
-            << List<label>(UIndirectList<label>(meshRows.globalId, rows))
-            << List<vector>(UIndirectList<vector>(meshRows.fExt, rows))
+        os  << rows;
+        meshRows.writeRows(os, rows);
+        os  << List<vector>(UIndirectList<vector>(meshRows.fExt, rows))
             << List<vector>(UIndirectList<vector>(meshRows.fContact, rows))
             << List<vector>(UIndirectList<vector>(meshRows.tContact, rows))
             << List<labelList>(UIndirectList<labelList>(keys, rows))
@@ -341,14 +334,8 @@ void Foam::demPartition::distribute
         }
         UIPstream is(proci, pBufs);
         const labelList rows(is);
-        const List<point> x(is);
-        const List<vector> v(is);
-        const List<vector> omega(is);
-        const List<scalar> r(is);
-        const List<scalar> m(is);
-        const List<scalar> N(is);
-        const labelList typeId(is);
-        const labelList globalId(is);
+        const label start = dem_.size();
+        dem_.readRows(is);
         const List<vector> fExt(is);
         const List<vector> fContact(is);
         const List<vector> tContact(is);
@@ -365,11 +352,7 @@ void Foam::demPartition::distribute
 
         forAll(rows, k)
         {
-            const label row = dem_.append
-            (
-                x[k], v[k], omega[k], r[k], m[k], N[k], typeId[k],
-                globalId[k]
-            );
+            const label row = start + k;
             dem_.fExt[row] = fExt[k];
             dem_.fContact[row] = fContact[k];
             dem_.tContact[row] = tContact[k];
@@ -378,7 +361,7 @@ void Foam::demPartition::distribute
 
             // The parcel's running contacts, from its mesh owner's copy
             // (its previous DEM owner wrote them there)
-            engine_.setHistory(globalId[k], rowKeys[k], rowXi[k]);
+            engine_.setHistory(dem_.globalId[row], rowKeys[k], rowXi[k]);
         }
     }
     fromProc_.transfer(fromProc);

@@ -3,6 +3,9 @@
 \*---------------------------------------------------------------------------*/
 
 #include "demState.H"
+#include "UIndirectList.H"
+#include "scalarList.H"
+#include "vectorList.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -52,6 +55,41 @@ Foam::label Foam::demState::append
     fContact.append(Zero);
     tContact.append(Zero);
     return x.size() - 1;
+}
+
+
+void Foam::demState::writeRows(Ostream& os, const labelUList& rows) const
+{
+    os  << List<point>(UIndirectList<point>(x, rows))
+        << List<vector>(UIndirectList<vector>(v, rows))
+        << List<vector>(UIndirectList<vector>(omega, rows))
+        << List<scalar>(UIndirectList<scalar>(r, rows))
+        << List<scalar>(UIndirectList<scalar>(m, rows))
+        << List<scalar>(UIndirectList<scalar>(N, rows))
+        << List<label>(UIndirectList<label>(typeId, rows))
+        << List<label>(UIndirectList<label>(globalId, rows));
+}
+
+
+Foam::label Foam::demState::readRows(Istream& is)
+{
+    const List<point> xs(is);
+    const List<vector> vs(is);
+    const List<vector> omegas(is);
+    const List<scalar> rs(is);
+    const List<scalar> ms(is);
+    const List<scalar> Ns(is);
+    const labelList typeIds(is);
+    const labelList globalIds(is);
+    forAll(xs, k)
+    {
+        append
+        (
+            xs[k], vs[k], omegas[k], rs[k], ms[k], Ns[k], typeIds[k],
+            globalIds[k]
+        );
+    }
+    return xs.size();
 }
 
 

@@ -66,15 +66,7 @@ void Foam::processorHalo::build
             continue;
         }
         UOPstream os(proci, pBufs);
-        os  << List<point>(UIndirectList<point>(s.x, rows))
-            << List<vector>(UIndirectList<vector>(s.v, rows))
-            << List<vector>(UIndirectList<vector>(s.omega, rows))
-            << List<scalar>(UIndirectList<scalar>(s.r, rows))
-            << List<scalar>(UIndirectList<scalar>(s.m, rows))
-            << List<scalar>(UIndirectList<scalar>(s.N, rows))
-            << List<label>(UIndirectList<label>(s.typeId, rows))
-            << List<label>(UIndirectList<label>(s.globalId, rows));
-
+        s.writeRows(os, rows);
         os  << (engine != nullptr);
         if (engine)
         {
@@ -104,27 +96,14 @@ void Foam::processorHalo::build
             continue;
         }
         UIPstream is(proci, pBufs);
-        const List<point> x(is);
-        const List<vector> v(is);
-        const List<vector> omega(is);
-        const List<scalar> r(is);
-        const List<scalar> m(is);
-        const List<scalar> N(is);
-        const labelList typeId(is);
-        const labelList globalId(is);
-
-        recvStart_[proci] = s.size();
-        recvSize_[proci] = x.size();
-        forAll(x, k)
-        {
-            const label row = s.append
-            (
-                x[k], v[k], omega[k], r[k], m[k], N[k], typeId[k], globalId[k]
-            );
-            // Not integrated here: its forces are never used
-            s.fContact[row] = Zero;
-            s.tContact[row] = Zero;
-        }
+        // Not integrated here: their forces (zero) are never used
+        const label start = s.size();
+        recvStart_[proci] = start;
+        recvSize_[proci] = s.readRows(is);
+        const labelList globalId
+        (
+            SubList<label>(s.globalId, recvSize_[proci], start)
+        );
 
         bool withHistory = false;
         is  >> withHistory;

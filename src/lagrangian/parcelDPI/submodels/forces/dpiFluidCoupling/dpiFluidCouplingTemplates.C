@@ -180,12 +180,17 @@ void Foam::dpiFluidCoupling::sample(const CloudType& cloud, const demState& s)
 
 
 template<class CloudType>
-void Foam::dpiFluidCoupling::addSources(CloudType& cloud, const scalar dt)
+void Foam::dpiFluidCoupling::addSources
+(
+    CloudType& cloud,
+    const UList<vector>& impulse,
+    const UList<scalar>& spImp
+)
 {
     // The drag impulse on the parcels, for the log (coupled or not)
     for (label i = 0; i < nRows_; ++i)
     {
-        gasMomentum_ -= dt*fCoupled_[i];
+        gasMomentum_ -= impulse[i];
     }
 
     if (!cloud.solution().coupled())
@@ -202,8 +207,8 @@ void Foam::dpiFluidCoupling::addSources(CloudType& cloud, const scalar dt)
     // sum to one: the gas receives exactly -F dt in total
     for (label i = 0; i < nRows_; ++i)
     {
-        const vector dU(-dt*fCoupled_[i]);
-        const scalar dC(dt*spCoupled_[i]);
+        const vector dU(-impulse[i]);
+        const scalar dC(spImp[i]);
         for (label k = spreadStart_[i]; k < spreadStart_[i+1]; ++k)
         {
             UTrans[spreadCells_[k]] += spreadWeights_[k]*dU;
@@ -220,8 +225,8 @@ void Foam::dpiFluidCoupling::addSources(CloudType& cloud, const scalar dt)
         if (remote_.found(k))
         {
             const label i = remoteRow_[k];
-            remoteUTrans_[k] -= wPt*dt*fCoupled_[i];
-            remoteUCoeff_[k] += wPt*dt*spCoupled_[i];
+            remoteUTrans_[k] -= wPt*impulse[i];
+            remoteUCoeff_[k] += wPt*spImp[i];
         }
     }
 }
@@ -349,44 +354,13 @@ void Foam::dpiFluidCoupling::finishSubSteps
     const List<scalarField>& scaOut
 )
 {
-    const vectorField& impulse = vecOut[0];
-    const scalarField& spImp = scaOut[0];
-
     for (label i = 0; i < nRows_; ++i)
     {
         fluid_[i].Uturb = vecOut[1][i];
-        gasMomentum_ -= impulse[i];
     }
 
-    if (cloud.solution().coupled())
-    {
-        // The fluid step's impulse of each parcel, spread as addSources
-        // spreads one sub-step's
-        volVectorField::Internal& UTrans = cloud.UTrans();
-        volScalarField::Internal& UCoeff = cloud.UCoeff();
-        for (label i = 0; i < nRows_; ++i)
-        {
-            const vector dU(-impulse[i]);
-            const scalar dC(spImp[i]);
-            for (label k = spreadStart_[i]; k < spreadStart_[i+1]; ++k)
-            {
-                UTrans[spreadCells_[k]] += spreadWeights_[k]*dU;
-                UCoeff[spreadCells_[k]] += spreadWeights_[k]*dC;
-            }
-            spImpulse_[i] += dC;
-        }
-
-        const scalar wPt = 1.0/dpiVoidFraction::nPoints;
-        forAll(remoteRow_, k)
-        {
-            if (remote_.found(k))
-            {
-                const label i = remoteRow_[k];
-                remoteUTrans_[k] -= wPt*impulse[i];
-                remoteUCoeff_[k] += wPt*spImp[i];
-            }
-        }
-    }
+    // The fluid step's impulse of each parcel, spread once
+    addSources(cloud, vecOut[0], scaOut[0]);
 
     endFluidStep(cloud, s);
 }
@@ -418,7 +392,14 @@ void Foam::dpiFluidCoupling::evolve
         advanceDispersion(s, Dt, 0);
         setForces(s);
         engine.evolve(s, Dt, g, obs);
-        addSources(cloud, Dt);
+        vectorField impulse(nRows_);
+        scalarField spImp(nRows_);
+        for (label i = 0; i < nRows_; ++i)
+        {
+            impulse[i] = Dt*fCoupled_[i];
+            spImp[i] = Dt*spCoupled_[i];
+        }
+        addSources(cloud, impulse, spImp);
         endFluidStep(cloud, s);
     }
     else
