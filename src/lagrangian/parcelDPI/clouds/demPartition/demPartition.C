@@ -4,6 +4,8 @@
 
 #include "demPartition.H"
 #include "PstreamBuffers.H"
+#include "PstreamCombineReduceOps.H"
+#include "ListOps.H"
 #include "SortableList.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -283,10 +285,36 @@ void Foam::demPartition::distribute
     const List<labelList>& keys = *keys_;
     const List<List<vector>>& xi = *xi_;
 
+    // The DEM owner of every row; too uneven over all processors (the
+    // parcels moved or left since the last cut): cut again now, so no
+    // fluid step runs above maxImbalance
     List<DynamicList<label>> rowsTo(nProcs);
-    for (label i = 0; i < nMesh; ++i)
+    for (label pass = 0; pass < 2; ++pass)
     {
-        rowsTo[owner(meshRows.x[i])].append(i);
+        labelList nTo(nProcs, 0);
+        forAll(rowsTo, proci)
+        {
+            rowsTo[proci].clear();
+        }
+        for (label i = 0; i < nMesh; ++i)
+        {
+            const label proci = owner(meshRows.x[i]);
+            rowsTo[proci].append(i);
+            ++nTo[proci];
+        }
+        Pstream::listCombineGather(nTo, plusEqOp<label>());
+        Pstream::listCombineScatter(nTo);
+        const label nAll = sum(nTo);
+        if
+        (
+            pass > 0
+         || nAll == 0
+         || scalar(max(nTo))*nProcs/nAll <= maxImbalance_
+        )
+        {
+            break;
+        }
+        partition(meshRows);
     }
 
     PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
@@ -375,16 +403,6 @@ void Foam::demPartition::distribute
     forAll(scaCols, c)
     {
         scaCols_[c].transfer(scaCols[c]);
-    }
-
-    // Too uneven: a new partition at the next fluid step
-    label nMost = dem_.size();
-    label nAll = dem_.size();
-    reduce(nMost, maxOp<label>());
-    reduce(nAll, sumOp<label>());
-    if (nAll > 0 && scalar(nMost)*nProcs/nAll > maxImbalance_)
-    {
-        repartition_ = true;
     }
 
     halo_.build(dem_, reach_, &engine_);
