@@ -225,7 +225,7 @@ Foam::incompressibleGas::incompressibleGas
 void Foam::incompressibleGas::attach(const basicDPICloud& cloud)
 {
     // With a void fraction model (fluidCoupling/voidFraction) its alphaMin
-    // is the floor, the same the drag sees through alpha (issue 5)
+    // is the floor, the same the drag sees through alpha
     const dpiVoidFraction* vf = cloud.fluidCoupling().voidFraction();
     if (vf)
     {

@@ -42,7 +42,7 @@ void Foam::DPICloud<CloudType>::setModels()
     engine_.reset(new demEngine(props.subDict("dem"), &this->mesh()));
     engine_->setTime(this->mesh().time().value());
 
-    // Gas-particle forces (issue 5): none unless fluidCoupling/forces
+    // Gas-particle forces: none unless fluidCoupling/forces
     coupling_.reset
     (
         new dpiFluidCoupling
@@ -665,7 +665,7 @@ Foam::scalar Foam::DPICloud<CloudType>::nPrimaries(const label typeId) const
 }
 
 
-// issue 6: dpiCloudInterface
+// dpiCloudInterface
 template<class CloudType>
 void Foam::DPICloud<CloudType>::samples(parcelSamples& s) const
 {
@@ -689,7 +689,7 @@ void Foam::DPICloud<CloudType>::samples(parcelSamples& s) const
 }
 
 
-// issue 5: void fraction hook
+// Void fraction hook
 template<class CloudType>
 const Foam::tmp<Foam::volScalarField>
 Foam::DPICloud<CloudType>::theta() const
