@@ -36,6 +36,7 @@ Description
 #include "incompressibleGas.H"
 #include "uniformDimensionedFields.H"
 #include "Enum.H"
+#include "writtenTimes.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -83,6 +84,11 @@ int main(int argc, char *argv[])
 
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
+
+    // Before Time reads the start time: a half-written one (a run killed
+    // while writing) is refused with the last complete time to go on from
+    writtenTimes::checkStart(args);
+
     #include "createTime.H"
     #include "createMesh.H"
     #include "checkDecomposition.H"

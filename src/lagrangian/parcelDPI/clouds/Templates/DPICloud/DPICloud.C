@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "DPICloud.H"
+#include "writtenTimes.H"
 #include "ListOps.H"
 #include "PstreamCombineReduceOps.H"
 #include "mathematicalConstants.H"
@@ -220,19 +221,32 @@ void Foam::DPICloud<CloudType>::checkCloudPresent(const label nIssued) const
     label nGone = sum(escapedParcels_) + sum(lostParcels_);
     Pstream::scatter(nGone);
 
-    const word cloudDir(this->db().time().timeName()/cloud::prefix/this->name());
+    const Time& time = this->db().time();
+    const word cloudDir(time.timeName()/cloud::prefix/this->name());
     if (nIssued > nGone)
     {
+        // Never advise going on without the cloud: name the latest time
+        // that has it (a parallel run's times may need reconstructing)
+        const word last
+        (
+            writtenTimes::lastComplete(time.path(), time.value(), this->name())
+        );
         FatalIOErrorInFunction(this->outputProperties())
-            << "Time " << this->db().time().timeName() << " has no parcels of"
+            << "Time " << time.timeName() << " has no parcels of"
             << " cloud " << this->name() << " (" << cloudDir << "/positions"
             << " not found or empty), but the cloud state in "
             << this->outputProperties().objectPath() << " says " << nIssued
             << " parcels were issued and " << nGone << " left the domain."
-            << nl << "    Restart from a time written with the cloud"
-            << " (after a parallel run: reconstructPar -lagrangianFields"
-            << " '(\".*\")'), or remove that state file to start without"
-            << " parcels."
+            << nl << "    Restart from a time written with the cloud";
+        if (last.size())
+        {
+            FatalIOError
+                << ": the latest before this one is " << last
+                << " (startFrom startTime; startTime " << last << ";)";
+        }
+        FatalIOError
+            << ". After a parallel run, reconstructPar -lagrangianFields"
+            << " '(\".*\")' writes the cloud into the case's times."
             << exit(FatalIOError);
     }
 

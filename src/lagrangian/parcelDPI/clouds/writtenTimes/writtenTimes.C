@@ -1,0 +1,328 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+\*---------------------------------------------------------------------------*/
+
+#include "writtenTimes.H"
+#include "Time.H"
+#include "IFstream.H"
+#include "OSspecific.H"
+#include "Pstream.H"
+#include "HashSet.H"
+#include <fstream>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    // Every file under dir (recursively), relative to dir
+    static void listFiles
+    (
+        const fileName& dir,
+        const fileName& rel,
+        DynamicList<fileName>& files
+    )
+    {
+        for (const fileName& f : readDir(dir/rel, fileName::FILE, false))
+        {
+            files.append(rel.empty() ? f : rel/f);
+        }
+        for (const fileName& d : readDir(dir/rel, fileName::DIRECTORY, false))
+        {
+            listFiles(dir, rel.empty() ? d : rel/d, files);
+        }
+    }
+
+    // Does the text end with OpenFOAM's end divider "// ****...**** //"?
+    static bool endsWithDivider(std::string text)
+    {
+        const auto last = text.find_last_not_of(" \t\r\n");
+        if (last == std::string::npos)
+        {
+            return false;
+        }
+        text.resize(last + 1);
+        static const std::string tail("******** //");
+        const auto start = text.rfind("// ****");
+        return
+            start != std::string::npos
+         && text.size() >= tail.size()
+         && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
+    }
+
+    // The last bytes of a plain file, or the last lines of a compressed one
+    static std::string fileTail(const fileName& path, const off_t size)
+    {
+        if (path.hasExt("gz"))
+        {
+            // IFstream decompresses when given the name without .gz
+            IFstream is(path.lessExt());
+            std::string tail;
+            string line;
+            while (is.good())
+            {
+                is.getLine(line);
+                if (line.find_first_not_of(" \t\r\n") != std::string::npos)
+                {
+                    tail = line;
+                }
+            }
+            return tail;
+        }
+
+        std::ifstream is(path, std::ios::binary);
+        const off_t n = min(size, off_t(256));
+        is.seekg(size - n);
+        std::string tail(n, '\0');
+        is.read(&tail[0], n);
+        tail.resize(is.gcount());
+        return tail;
+    }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::instantList Foam::writtenTimes::times(const fileName& casePath)
+{
+    // findTimes lists 'constant' first (as time 0): not a time
+    DynamicList<instant> ts;
+    for (const instant& t : Time::findTimes(casePath, "constant"))
+    {
+        if (t.name() != "constant")
+        {
+            ts.append(t);
+        }
+    }
+    return instantList(std::move(ts));
+}
+
+
+Foam::word Foam::writtenTimes::startTimeName(const fileName& casePath)
+{
+    // The global case's controlDict (a processor case has none of its own)
+    const fileName controlDict
+    (
+        (Pstream::parRun() ? casePath.path() : casePath)/"system/controlDict"
+    );
+    const instantList ts(times(casePath));
+    if (!isFile(controlDict) || ts.empty())
+    {
+        return word::null;      // nothing to check: Time says what is wrong
+    }
+
+    IFstream is(controlDict);
+    const dictionary dict(is);
+    const word startFrom(dict.getOrDefault<word>("startFrom", "startTime"));
+
+    if (startFrom == "latestTime")
+    {
+        return ts.last().name();
+    }
+    if (startFrom == "firstTime")
+    {
+        return ts.first().name();
+    }
+
+    const scalar startTime = dict.getOrDefault<scalar>("startTime", 0);
+    for (const instant& t : ts)
+    {
+        if (t.equal(startTime))
+        {
+            return t.name();
+        }
+    }
+    return word::null;
+}
+
+
+Foam::wordList Foam::writtenTimes::completeTimes
+(
+    const fileName& casePath,
+    const word& cloudName
+)
+{
+    DynamicList<word> names;
+    for (const instant& t : times(casePath))
+    {
+        const fileName dir(casePath/t.name());
+        if (!incompleteFiles(dir).empty())
+        {
+            continue;
+        }
+        if (cloudName.size())
+        {
+            const fileName cloudDir(dir/"lagrangian"/cloudName);
+            bool found = false;
+            for (const word f : {"coordinates", "positions"})
+            {
+                found = found || isFile(cloudDir/f) || isFile(cloudDir/f + ".gz");
+            }
+            if (!found)
+            {
+                continue;
+            }
+        }
+        names.append(t.name());
+    }
+    return wordList(std::move(names));
+}
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+Foam::stringList Foam::writtenTimes::incompleteFiles(const fileName& timeDir)
+{
+    DynamicList<string> problems;
+    if (!isDir(timeDir))
+    {
+        return stringList();
+    }
+
+    // Time writes uniform/time first: its presence marks a run's output,
+    // which always closes each file with the end divider
+    const bool runOutput =
+        isFile(timeDir/"uniform/time") || isFile(timeDir/"uniform/time.gz");
+
+    DynamicList<fileName> files;
+    listFiles(timeDir, fileName::null, files);
+    for (const fileName& rel : files)
+    {
+        const fileName path(timeDir/rel);
+        const off_t size = fileSize(path);
+        if (size <= 0)
+        {
+            problems.append(rel + ": empty");
+        }
+        else if (runOutput && !endsWithDivider(fileTail(path, size)))
+        {
+            problems.append(rel + ": cut short (no end divider)");
+        }
+    }
+    return stringList(std::move(problems));
+}
+
+
+Foam::word Foam::writtenTimes::lastComplete
+(
+    const fileName& casePath,
+    const scalar before,
+    const word& cloudName
+)
+{
+    // Each processor's complete times; the master keeps those complete on
+    // all of them (processor directories hold the same time names)
+    List<wordList> complete(Pstream::nProcs());
+    complete[Pstream::myProcNo()] = completeTimes(casePath, cloudName);
+    Pstream::gatherList(complete);
+
+    word last;
+    if (Pstream::master())
+    {
+        wordHashSet common(complete[0]);
+        for (label proci = 1; proci < complete.size(); ++proci)
+        {
+            common &= wordHashSet(complete[proci]);
+        }
+        scalar lastValue = -GREAT;
+        for (const word& name : common)
+        {
+            const scalar value = readScalar(name);
+            if (value < before - SMALL && value > lastValue)
+            {
+                lastValue = value;
+                last = name;
+            }
+        }
+    }
+    Pstream::scatter(last);
+    return last;
+}
+
+
+void Foam::writtenTimes::checkStart(const argList& args)
+{
+    const fileName casePath(args.path());
+    const word start(startTimeName(casePath));
+
+    stringList problems;
+    if (start.size())
+    {
+        problems = incompleteFiles(casePath/start);
+        // Named as the user sees them from the case (plain strings: the
+        // reasons are not valid file names)
+        const string prefix
+        (
+            Pstream::parRun()
+          ? "processor" + Foam::name(Pstream::myProcNo()) + "/" + start + "/"
+          : start + "/"
+        );
+        for (string& p : problems)
+        {
+            p = prefix + p;
+        }
+    }
+
+    List<stringList> all(Pstream::nProcs());
+    all[Pstream::myProcNo()] = problems;
+    Pstream::gatherList(all);
+    Pstream::scatterList(all);
+
+    label nProblems = 0;
+    for (const stringList& p : all)
+    {
+        nProblems += p.size();
+    }
+    if (!nProblems)
+    {
+        return;
+    }
+
+    const word last(lastComplete(casePath, readScalar(start)));
+
+    // Every processor knows; the master alone says it (once in the log)
+    if (!Pstream::master())
+    {
+        Pstream::exit(1);
+    }
+
+    // Time is not constructed yet: FatalError, not FatalIOError
+    FatalErrorInFunction
+        << "Time " << start << ", where this run would start (system/"
+        << "controlDict startFrom/startTime), was not completely written:"
+        << " the run that wrote it was probably stopped while writing it."
+        << nl;
+    label shown = 0;
+    for (const stringList& p : all)
+    {
+        for (const string& s : p)
+        {
+            if (shown++ < 10)
+            {
+                FatalError<< "    " << s.c_str() << nl;
+            }
+        }
+    }
+    if (nProblems > 10)
+    {
+        FatalError<< "    ... and " << nProblems - 10 << " more" << nl;
+    }
+    if (last.size())
+    {
+        FatalError
+            << "The last complete time is " << last << ". To go on from it,"
+            << " remove the incomplete time (rm -r " << start
+            << (Pstream::parRun() ? " processor*/" + start : std::string()).c_str()
+            << ") or set 'startFrom startTime; startTime " << last << ";'"
+            << " in system/controlDict.";
+    }
+    else
+    {
+        FatalError
+            << "No earlier time is complete: the run can only start again"
+            << " from its initial conditions.";
+    }
+    FatalError<< exit(FatalError);
+}
+
+
+// ************************************************************************* //
