@@ -32,8 +32,10 @@ namespace Foam
         }
     }
 
-    // Does the text end with OpenFOAM's end divider "// ****...**** //"?
-    static bool endsWithDivider(std::string text)
+    // Does the text end as a complete file: with OpenFOAM's end divider
+    // "// ****...**** //", or (not strict) with the closing brace of its
+    // last dictionary, as a hand-written field copied into a time may
+    static bool endsCompletely(std::string text, const bool strict)
     {
         const auto last = text.find_last_not_of(" \t\r\n");
         if (last == std::string::npos)
@@ -41,6 +43,10 @@ namespace Foam
             return false;
         }
         text.resize(last + 1);
+        if (!strict && text.back() == '}')
+        {
+            return true;
+        }
         static const std::string tail("******** //");
         const auto start = text.rfind("// ****");
         return
@@ -193,9 +199,16 @@ Foam::stringList Foam::writtenTimes::incompleteFiles(const fileName& timeDir)
         {
             problems.append(rel + ": empty");
         }
-        else if (runOutput && !endsWithDivider(fileTail(path, size)))
+        else if (runOutput)
         {
-            problems.append(rel + ": cut short (no end divider)");
+            // The cloud and the uniform state only the run writes (with the
+            // divider); gas fields may be hand-written files copied in
+            const bool strict =
+                rel.starts_with("lagrangian/") || rel.starts_with("uniform/");
+            if (!endsCompletely(fileTail(path, size), strict))
+            {
+                problems.append(rel + ": cut short (no end divider)");
+            }
         }
     }
     return stringList(std::move(problems));
