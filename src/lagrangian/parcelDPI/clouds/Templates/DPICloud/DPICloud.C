@@ -4,6 +4,7 @@
 
 #include "DPICloud.H"
 #include "writtenTimes.H"
+#include "restartCheck.H"
 #include "ListOps.H"
 #include "PstreamCombineReduceOps.H"
 #include "mathematicalConstants.H"
@@ -156,6 +157,35 @@ void Foam::DPICloud<CloudType>::readState()
 
     nextGlobalId_ = dpiDict.lookupOrDefault<label>("nextGlobalId", 0);
 
+    const Time& time = this->db().time();
+    const label nParcels = returnReduce(this->size(), sumOp<label>());
+
+    // Parcels without the state written with them (uniform/ deleted or
+    // not copied): the models, the type table and the ids issued are
+    // unknown, and nothing below could be checked
+    const bool stateMissing = !this->outputProperties().found("dpiCloud");
+    if (nParcels && returnReduce(stateMissing, orOp<bool>()))
+    {
+        const word last
+        (
+            writtenTimes::lastComplete(time.path(), time.value(), this->name())
+        );
+        FatalIOErrorInFunction(this->outputProperties())
+            << "Time " << time.timeName() << " has " << nParcels
+            << " parcels of cloud " << this->name() << " but not the cloud"
+            << " state written with them ("
+            << this->outputProperties().objectPath() << " is missing)."
+            << nl << "    Without it the models, the type table and the"
+            << " ids issued are unknown and a restart cannot be checked."
+            << " Restore " << time.timeName() << "/uniform (written with"
+            << " every time; decomposePar and reconstructPar copy it)";
+        if (last.size())
+        {
+            FatalIOError<< " or restart from " << last;
+        }
+        FatalIOError<< "." << exit(FatalIOError);
+    }
+
     // A restart may change material and model coefficients, not the
     // choice of models: the state written (histories, forces) belongs to
     // the models that wrote it
@@ -176,6 +206,11 @@ void Foam::DPICloud<CloudType>::readState()
                 << " the models: set " << key << " " << before << ";"
                 << exit(FatalIOError);
         }
+    }
+
+    if (nParcels)
+    {
+        checkRestartCloud(dpiDict);
     }
 
     // Parcels read from a restart carry their ids: never reissue one
@@ -201,6 +236,120 @@ void Foam::DPICloud<CloudType>::readState()
     }
 
     checkCloudPresent(nextGlobalId_);
+}
+
+
+template<class CloudType>
+void Foam::DPICloud<CloudType>::checkRestartCloud(const dictionary& dpiDict)
+{
+    const word timeName(this->db().time().timeName());
+    const dictionary& demDict = this->particleProperties().subDict("dem");
+    const demMaterials& mat = engine_->materials();
+
+    labelList typeIds(this->size());
+    labelList ids(this->size());
+    scalarList ds(this->size()), Ns(this->size()), rhos(this->size());
+    label i = 0;
+    for (const parcelType& p : *this)
+    {
+        typeIds[i] = p.typeId();
+        ids[i] = p.globalId();
+        ds[i] = p.d();
+        Ns[i] = p.N();
+        rhos[i] = p.rho();
+        ++i;
+    }
+
+    // Types by name; what the parcels were made with unchanged
+    const labelList newIndex
+    (
+        restartCheck::mapTypes
+        (
+            dpiDict, demDict, mat, timeName, typeIds, ids, ds, Ns, rhos
+        )
+    );
+    if (newIndex.size())
+    {
+        for (parcelType& p : *this)
+        {
+            p.typeId() = newIndex[p.typeId()];
+        }
+    }
+
+    // Unique ids, and contact histories that name parcels and walls that
+    // exist. A partner that was issued but is gone (it left through an
+    // outlet in the step the time was written) is a finished contact:
+    // dropped. One never issued, or a wall not in dem/walls, is refused.
+    const labelHashSet all(restartCheck::globalIds(ids, timeName));
+    const label nIssued = dpiDict.lookupOrDefault<label>("nextGlobalId", 0);
+    const label nWalls = engine_->walls().size();
+    label nDropped = 0;
+    string reason;
+    for (parcelType& p : *this)
+    {
+        labelField& keys = p.contactKeys();
+        vectorField& xi = p.contactXi();
+        label n = 0;
+        forAll(keys, k)
+        {
+            const label key = keys[k];
+            const bool isWall = key < 0;
+            const label wall = isWall ? (-1 - key) % 128 : -1;
+            if
+            (
+                reason.empty()
+             && ((!isWall && key >= nIssued) || (isWall && wall >= nWalls))
+            )
+            {
+                reason =
+                    "Parcel " + Foam::name(p.globalId()) + " at time "
+                  + timeName + " has a contact history with "
+                  + (
+                        isWall
+                      ? "wall " + Foam::name(wall) + ", but dem/walls has "
+                        + Foam::name(nWalls)
+                      : "parcel " + Foam::name(key) + ", but only "
+                        + Foam::name(nIssued) + " ids were issued"
+                    )
+                  + ": the contactKeys field was edited or belongs to"
+                  + " another case.";
+            }
+            if (!isWall && !all.found(key))
+            {
+                ++nDropped;
+                continue;
+            }
+            keys[n] = key;
+            xi[n] = xi[k];
+            ++n;
+        }
+        keys.setSize(n);
+        xi.setSize(n);
+    }
+
+    List<string> reasons(Pstream::nProcs());
+    reasons[Pstream::myProcNo()] = reason;
+    Pstream::gatherList(reasons);
+    Pstream::scatterList(reasons);
+    for (const string& r : reasons)
+    {
+        if (r.size())
+        {
+            if (!Pstream::master())
+            {
+                Pstream::exit(1);
+            }
+            FatalIOErrorInFunction(this->outputProperties())
+                << r.c_str() << exit(FatalIOError);
+        }
+    }
+
+    reduce(nDropped, sumOp<label>());
+    if (nDropped)
+    {
+        Info<< "    Dropped " << nDropped << " contact histories with parcels"
+            << " that left the domain before time " << timeName << endl;
+    }
 }
 
 
@@ -278,6 +427,21 @@ void Foam::DPICloud<CloudType>::storeCounters()
         models.add(key, demDict.get<word>(key));
     }
     dpiDict.add("models", models);
+
+    // The type table a restart checks the parcels against (restartCheck)
+    if (engine_.valid())
+    {
+        labelList typeIds(this->size());
+        scalarList ds(this->size());
+        label i = 0;
+        for (const parcelType& p : *this)
+        {
+            typeIds[i] = p.typeId();
+            ds[i] = p.d();
+            ++i;
+        }
+        restartCheck::writeTypes(dpiDict, engine_->materials(), typeIds, ds);
+    }
 
     // Global sums, the same on every processor (readState gives them back
     // to the master only, so a restart on any decomposition counts once)
