@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "demEngine.H"
+#include <cmath>
 #include "pairScaling.H"
 #include "demContact.H"
 #include "polyMesh.H"
@@ -721,8 +722,10 @@ void Foam::demEngine::pairForces(const demState& s, const bool advance)
             if (i < nOwned)
             {
                 ++diag_.nPairContacts;
-                diag_.maxOverlapRatio =
-                    max(diag_.maxOverlapRatio, c.delta/c.Rstar);
+                diag_.record
+                (
+                    c.delta/c.Rstar, -c.vn, s.globalId[i], s.globalId[j]
+                );
             }
         }
     }
@@ -908,7 +911,7 @@ void Foam::demEngine::wallForces
         if (p < s.owned())
         {
             ++diag_.nWallContacts;
-            diag_.maxOverlapRatio = max(diag_.maxOverlapRatio, c.delta/rp);
+            diag_.record(c.delta/rp, -c.vn, s.globalId[p], -1 - w);
         }
     }
 
@@ -1073,6 +1076,8 @@ Foam::demEngine::demEngine(const dictionary& dict, const polyMesh* mesh)
     maxImpactVelocity_(0),
     startOverlapWarn_(0.01),
     startOverlapRefuse_(0.1),
+    runOverlapWarn_(0.1),
+    runOverlapRefuse_(0.5),
     allowUnstable_(false),
     g_(Zero),
     time_(0),
@@ -1134,6 +1139,22 @@ Foam::demEngine::demEngine(const dictionary& dict, const polyMesh* mesh)
             << " 0.1)" << exit(FatalIOError);
     }
 
+    // While running: Hertz contact holds for small overlaps (about 0.1 R*,
+    // where the start-up check also warns); at 0.5 R* the contact is far
+    // outside it and a little more takes a parcel through its partner
+    const dictionary ocDict(dict.subOrEmptyDict("overlapCheck"));
+    runOverlapWarn_ = ocDict.getOrDefault<scalar>("warn", runOverlapWarn_);
+    runOverlapRefuse_ =
+        ocDict.getOrDefault<scalar>("refuse", runOverlapRefuse_);
+    if (!(runOverlapWarn_ > 0) || !(runOverlapRefuse_ >= runOverlapWarn_))
+    {
+        FatalIOErrorInFunction(dict)
+            << "overlapCheck { warn " << runOverlapWarn_ << "; refuse "
+            << runOverlapRefuse_ << "; } in dictionary " << dict.name()
+            << ": need 0 < warn <= refuse (overlap / R*; defaults 0.1 and"
+            << " 0.5)" << exit(FatalIOError);
+    }
+
     Info<< "DEM engine: " << materials_.size() << " types "
         << materials_.names() << ", " << walls_.size() << " walls, skin "
         << skin << " m" << endl;
@@ -1168,6 +1189,7 @@ void Foam::demEngine::evolve
     }
 
     checkState(s);
+    diag_.resetStep();
 
     // Only owned rows are integrated; ghosts (halo copies) are refreshed
     // by the halo from their owners
@@ -1302,6 +1324,44 @@ void Foam::demEngine::evolve
         if (obs)
         {
             obs->subStep(time_, s);
+        }
+    }
+
+    // Travel per step in radii: once per fluid step (the contacts' checks
+    // cannot see a parcel that jumps a wall or a partner between steps)
+    for (label p = 0; p < n; ++p)
+    {
+        const scalar travel = mag(s.v[p])*dt/s.r[p];
+        if (travel > diag_.stepMaxTravel)
+        {
+            diag_.stepMaxTravel = travel;
+            diag_.travelId = s.globalId[p];
+        }
+    }
+
+    // A non-finite state (only reachable with FOAM_SIGFPE off) must not be
+    // written: the energies of the last sub-step sum every owned velocity
+    if (!std::isfinite(diag_.kineticEnergy + diag_.rotationalEnergy))
+    {
+        for (label p = 0; p < n; ++p)
+        {
+            if
+            (
+                !std::isfinite(magSqr(s.x[p]))
+             || !std::isfinite(magSqr(s.v[p]))
+             || !std::isfinite(magSqr(s.omega[p]))
+            )
+            {
+                FatalErrorInFunction
+                    << "Parcel " << s.globalId[p] << " has a non-finite"
+                    << " state at DEM time " << time_ << ": position "
+                    << s.x[p] << ", velocity " << s.v[p] << ", spin "
+                    << s.omega[p] << nl << "    Stopped before it is"
+                    << " written; the last written time is intact. Look at"
+                    << " this parcel's contacts and forces (trace"
+                    << " { parcels (" << s.globalId[p] << "); })"
+                    << exit(FatalError);
+            }
         }
     }
 
