@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "agglomerateTracker.H"
+#include "dictKeys.H"
 #include "demState.H"
 #include "demMaterials.H"
 #include "HashTable.H"
@@ -142,6 +143,9 @@ Foam::agglomerateTracker::agglomerateTracker
     file_(nullptr),
     stats_()
 {
+    // The one key read above
+    dictKeys::warnUnknown(dict, {"linkGap"});
+
     if (!dir.empty() && Pstream::master())
     {
         mkDir(dir);

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "demPartition.H"
+#include "dictKeys.H"
 #include "PstreamBuffers.H"
 #include "PstreamCombineReduceOps.H"
 #include "ListOps.H"
@@ -241,6 +242,11 @@ Foam::demPartition::demPartition
 bool Foam::demPartition::selected(const dictionary& demDict)
 {
     const dictionary lbDict(demDict.subOrEmptyDict("loadBalance"));
+
+    // Called once per run on every processor, in serial too: the keys of
+    // loadBalance read here and by the constructor
+    dictKeys::warnUnknown(lbDict, {"type", "maxImbalance"});
+
     const word type(lbDict.getOrDefault<word>("type", "rcb"));
     if (type != "rcb" && type != "none")
     {

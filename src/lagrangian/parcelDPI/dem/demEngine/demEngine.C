@@ -6,6 +6,7 @@
 #include <cmath>
 #include "pairScaling.H"
 #include "demContact.H"
+#include "dictKeys.H"
 #include "polyMesh.H"
 #include "IOmanip.H"
 #include "Map.H"
@@ -19,6 +20,24 @@ namespace Foam
 {
     defineTypeNameAndDebug(demEngine, 0);
 }
+
+
+const Foam::wordList Foam::demEngine::keys
+({
+    "timeStep",
+    "types",
+    "pairs",
+    "normalModel",
+    "tangentialModel",
+    "rollingModel",
+    "cohesionModel",
+    "walls",
+    "neighbourSearch",
+    "timeStepCheck",
+    "startOverlap",
+    "overlapCheck",
+    "loadBalance"
+});
 
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
@@ -37,6 +56,31 @@ inline double wallClock()
 
 //- Walls are packed with 7 bits in the history partner key
 const Foam::label maxWalls = 128;
+
+//- The model families of the engine: the selecting key and whether a model
+//  of that name exists in the family (for <model>Coeffs of a model that is
+//  not selected)
+struct modelFamily
+{
+    const char* key;
+    bool (*exists)(const Foam::word& model);
+};
+
+template<class Model>
+bool modelExists(const Foam::word& model)
+{
+    return
+        Model::dictionaryConstructorTablePtr_
+     && Model::dictionaryConstructorTablePtr_->found(model);
+}
+
+const modelFamily modelFamilies[] =
+{
+    { "normalModel", &modelExists<Foam::normalContactModel> },
+    { "tangentialModel", &modelExists<Foam::tangentialContactModel> },
+    { "rollingModel", &modelExists<Foam::rollingContactModel> },
+    { "cohesionModel", &modelExists<Foam::cohesionContactModel> }
+};
 
 } // End anonymous namespace
 
@@ -1060,6 +1104,66 @@ bool Foam::demEngine::reuseCache(const demState& s)
 }
 
 
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+Foam::label Foam::demEngine::warnUnknownKeys(const dictionary& dict)
+{
+    label nWarnings = 0;
+
+    // The selected models' Coeffs are read by the models themselves
+    wordList known(keys);
+    for (const modelFamily& f : modelFamilies)
+    {
+        const word model(dict.getOrDefault<word>(f.key, word::null));
+        if (model.size() && !known.found(model + "Coeffs"))
+        {
+            known.append(model + "Coeffs");
+        }
+    }
+
+    // The Coeffs of a model that exists but is not selected is ignored
+    // (usually a model switched off, e.g. rollingModel none with cdtCoeffs
+    // left in place): say so, naming the model that is selected, rather
+    // than calling it unknown
+    const word suffix("Coeffs");
+    for (const entry& e : dict)
+    {
+        const keyType& key = e.keyword();
+        if
+        (
+            key.isPattern()
+         || key.size() <= suffix.size()
+         || !key.ends_with(suffix)
+         || known.found(key)
+        )
+        {
+            continue;
+        }
+
+        const word model(key.substr(0, key.size() - suffix.size()));
+        for (const modelFamily& f : modelFamilies)
+        {
+            if (f.exists(model))
+            {
+                IOWarningInFunction(dict)
+                    << "Dictionary '" << key.c_str() << "' in dictionary "
+                    << dict.name().c_str() << " is not used: " << f.key
+                    << " is "
+                    << dict.getOrDefault<word>(f.key, word::null).c_str()
+                    << " (" << key.c_str() << " is read only with "
+                    << f.key << " " << model.c_str() << ")" << endl;
+
+                known.append(key);
+                ++nWarnings;
+                break;
+            }
+        }
+    }
+
+    return nWarnings + dictKeys::warnUnknown(dict, known);
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::demEngine::demEngine(const dictionary& dict, const polyMesh* mesh)
@@ -1105,6 +1209,7 @@ Foam::demEngine::demEngine(const dictionary& dict, const polyMesh* mesh)
     readWalls(dict, mesh);
 
     const dictionary nsDict(dict.subOrEmptyDict("neighbourSearch"));
+    dictKeys::warnUnknown(nsDict, {"skin"});
     const scalar skin = nsDict.getOrDefault<scalar>("skin", defaultSkin());
     if (!(skin > 0))
     {
@@ -1116,6 +1221,7 @@ Foam::demEngine::demEngine(const dictionary& dict, const polyMesh* mesh)
     search_ = neighbourSearch(skin);
 
     const dictionary& tsDict = dict.subDict("timeStepCheck");
+    dictKeys::warnUnknown(tsDict, {"maxImpactVelocity", "allowUnstable"});
     maxImpactVelocity_ = tsDict.get<scalar>("maxImpactVelocity");
     if (!(maxImpactVelocity_ > 0))
     {
@@ -1127,6 +1233,7 @@ Foam::demEngine::demEngine(const dictionary& dict, const polyMesh* mesh)
     allowUnstable_ = tsDict.getOrDefault<bool>("allowUnstable", false);
 
     const dictionary soDict(dict.subOrEmptyDict("startOverlap"));
+    dictKeys::warnUnknown(soDict, {"warn", "refuse"});
     startOverlapWarn_ = soDict.getOrDefault<scalar>("warn", startOverlapWarn_);
     startOverlapRefuse_ =
         soDict.getOrDefault<scalar>("refuse", startOverlapRefuse_);
@@ -1143,6 +1250,7 @@ Foam::demEngine::demEngine(const dictionary& dict, const polyMesh* mesh)
     // where the start-up check also warns); at 0.5 R* the contact is far
     // outside it and a little more takes a parcel through its partner
     const dictionary ocDict(dict.subOrEmptyDict("overlapCheck"));
+    dictKeys::warnUnknown(ocDict, {"warn", "refuse"});
     runOverlapWarn_ = ocDict.getOrDefault<scalar>("warn", runOverlapWarn_);
     runOverlapRefuse_ =
         ocDict.getOrDefault<scalar>("refuse", runOverlapRefuse_);

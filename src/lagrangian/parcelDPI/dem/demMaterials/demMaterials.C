@@ -4,6 +4,7 @@
 
 #include "demMaterials.H"
 #include "typePairDicts.H"
+#include "dictKeys.H"
 #include "mathematicalConstants.H"
 #include "HashSet.H"
 
@@ -37,6 +38,27 @@ Foam::scalar readInRange
 }
 
 } // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::wordList Foam::demMaterials::typeKeys
+({
+    "diameter",
+    "density",
+    "youngsModulus",
+    "poissonsRatio",
+    "N",
+    "api"
+});
+
+
+const Foam::wordList Foam::demMaterials::pairKeys
+({
+    "restitution",
+    "friction",
+    "rollingFriction"
+});
 
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -92,10 +114,19 @@ void Foam::demMaterials::readType(const label typei, const dictionary& d)
 }
 
 
-void Foam::demMaterials::readPairs(const dictionary& pairsDict)
+void Foam::demMaterials::readPairs
+(
+    const dictionary& pairsDict,
+    const bool warnKeys
+)
 {
     const label n = names_.size();
     const typePairDicts pairDicts(pairsDict, names_);
+
+    if (warnKeys)
+    {
+        pairDicts.warnUnknownKeys(pairKeys);
+    }
 
     pairs_.setSize(n*n);
 
@@ -207,7 +238,11 @@ void Foam::demMaterials::checkCoarsening(const dictionary& typesDict) const
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::demMaterials::demMaterials(const dictionary& dict)
+Foam::demMaterials::demMaterials
+(
+    const dictionary& dict,
+    const bool warnUnknownKeys
+)
 {
     const dictionary& typesDict = dict.subDict("types");
 
@@ -237,12 +272,16 @@ Foam::demMaterials::demMaterials(const dictionary& dict)
                 << typesDict.name() << " is not a dictionary of material"
                 << " properties" << exit(FatalIOError);
         }
+        if (warnUnknownKeys)
+        {
+            dictKeys::warnUnknown(typesDict.subDict(names_[i]), typeKeys);
+        }
         readType(i, typesDict.subDict(names_[i]));
     }
 
     checkCoarsening(typesDict);
 
-    readPairs(dict.subDict("pairs"));
+    readPairs(dict.subDict("pairs"), warnUnknownKeys);
 }
 
 

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "typePairDicts.H"
+#include "dictKeys.H"
 #include "HashSet.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -76,6 +77,20 @@ const Foam::dictionary* Foam::typePairDicts::find
         return pdji;
     }
     return default_;
+}
+
+
+Foam::label Foam::typePairDicts::warnUnknownKeys(const wordList& known) const
+{
+    label nUnknown = 0;
+    for (const entry& e : dict_)
+    {
+        if (e.isDict())
+        {
+            nUnknown += dictKeys::warnUnknown(e.dict(), known);
+        }
+    }
+    return nUnknown;
 }
 
 

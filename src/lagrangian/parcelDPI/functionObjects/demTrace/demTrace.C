@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "demTrace.H"
+#include "dictKeys.H"
 #include "demState.H"
 #include "OSspecific.H"
 
@@ -40,7 +41,10 @@ Foam::demTrace::demTrace(const dictionary& dict, const fileName& dir)
     t0_(0),
     dt_(0),
     k_(0)
-{}
+{
+    // The one key read above
+    dictKeys::warnUnknown(dict, {"parcels"});
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //

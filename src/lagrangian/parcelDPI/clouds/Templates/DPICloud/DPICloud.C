@@ -9,6 +9,7 @@
 #include "PstreamCombineReduceOps.H"
 #include "mathematicalConstants.H"
 #include "clockTime.H"
+#include "dictKeys.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -33,6 +34,18 @@ void Foam::DPICloud<CloudType>::setModels()
 {
     const dictionary& props = this->particleProperties();
 
+    // The top-level keys: those the stock KinematicCloud reads (solution,
+    // constantProperties, subModels, cloudFunctions), then those read here
+    // and by dpiFluidCoupling. Each reader below checks its own dictionary
+    dictKeys::warnUnknown
+    (
+        props,
+        {
+            "solution", "constantProperties", "subModels", "cloudFunctions",
+            "dem", "injectors", "fluidCoupling", "trace", "agglomerates"
+        }
+    );
+
     if (!props.found("dem"))
     {
         FatalIOErrorInFunction(props)
@@ -41,6 +54,9 @@ void Foam::DPICloud<CloudType>::setModels()
             << exit(FatalIOError);
     }
 
+    // The engine's own keys first, so that a typo is named before a
+    // reader stops on the entry it misses
+    demEngine::warnUnknownKeys(props.subDict("dem"));
     engine_.reset(new demEngine(props.subDict("dem"), &this->mesh()));
     engine_->setTime(this->mesh().time().value());
 

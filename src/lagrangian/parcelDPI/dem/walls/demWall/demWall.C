@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "demWall.H"
+#include "dictKeys.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -15,11 +16,21 @@ namespace Foam
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::demWall::demWall(const word& name, const dictionary& dict)
+Foam::demWall::demWall
+(
+    const word& name,
+    const dictionary& dict,
+    const wordList& typeKeys
+)
 :
     name_(name),
     material_(dict.get<word>("material"))
-{}
+{
+    // type is read by the selector New
+    wordList known({"type", "material"});
+    known.append(typeKeys);
+    dictKeys::warnUnknown(dict, known);
+}
 
 
 // * * * * * * * * * * * * * * * * * Selector  * * * * * * * * * * * * * * * //

@@ -201,7 +201,14 @@ Foam::demWalls::patchWall::patchWall
     Tuple2<pointField, triFaceList>&& surf
 )
 :
-    triangleWall(name, dict, std::move(surf.first()), std::move(surf.second()))
+    triangleWall
+    (
+        name,
+        dict,
+        std::move(surf.first()),
+        std::move(surf.second()),
+        {"patches"}
+    )
 {}
 
 

@@ -26,7 +26,7 @@ Foam::demWalls::planeWall::planeWall
     const polyMesh*
 )
 :
-    demWall(name, dict),
+    demWall(name, dict, {"point", "normal"}),
     origin_(dict.get<point>("point")),
     normal_(dict.get<vector>("normal"))
 {

@@ -68,7 +68,8 @@ Foam::demWalls::triangleWall::triangleWall
         name,
         dict,
         dict.get<pointField>("points"),
-        dict.get<triFaceList>("triangles")
+        dict.get<triFaceList>("triangles"),
+        {"points", "triangles"}
     )
 {}
 
@@ -78,10 +79,11 @@ Foam::demWalls::triangleWall::triangleWall
     const word& name,
     const dictionary& dict,
     pointField&& points,
-    triFaceList&& tris
+    triFaceList&& tris,
+    const wordList& typeKeys
 )
 :
-    demWall(name, dict),
+    demWall(name, dict, typeKeys),
     points_(std::move(points)),
     tris_(std::move(tris)),
     cellSize_(0),

@@ -4,6 +4,7 @@
 
 #include "dpiFluidCoupling.H"
 #include "IOdictionary.H"
+#include "dictKeys.H"
 #include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -350,6 +351,17 @@ Foam::dpiFluidCoupling::dpiFluidCoupling
     dispersion_(nullptr),
     sgs_()
 {
+    // The keys of fluidCoupling read here (alpha and p: lookupField);
+    // forces, voidFraction and turbulentDispersion check their own
+    dictKeys::warnUnknown
+    (
+        dict_,
+        {
+            "dragUpdate", "interpolation", "forces", "voidFraction",
+            "turbulentDispersion", "alpha", "p"
+        }
+    );
+
     const dictionary forcesDict(dict_.subOrEmptyDict("forces"));
     const wordList names(forcesDict.toc());
     const bool wantVoidFraction = dict_.found("voidFraction");

@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "dpiFluidForce.H"
+#include "dictKeys.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -18,12 +19,15 @@ namespace Foam
 Foam::dpiFluidForce::dpiFluidForce
 (
     const word& name,
-    const dictionary& coeffs
+    const dictionary& coeffs,
+    const wordList& coeffKeys
 )
 :
     name_(name),
     coeffDict_(coeffs)
-{}
+{
+    dictKeys::warnUnknown(coeffDict_, coeffKeys);
+}
 
 
 // * * * * * * * * * * * * * * * * * Selector  * * * * * * * * * * * * * * * //

@@ -26,7 +26,7 @@ Foam::dpiFluidForces::pressureGradient::pressureGradient
     const dictionary& coeffs
 )
 :
-    dpiFluidForce(name, coeffs)
+    dpiFluidForce(name, coeffs, wordList())    // reads no coefficients
 {}
 
 

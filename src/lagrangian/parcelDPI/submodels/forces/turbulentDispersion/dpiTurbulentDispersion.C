@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "dpiTurbulentDispersion.H"
+#include "dictKeys.H"
 #include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -45,6 +46,13 @@ Foam::dpiTurbulentDispersion::dpiTurbulentDispersion(const dictionary& dict)
     CL_(1/(0.5 + 0.75*C0_)),
     seed_(uint64_t(dict.getOrDefault<label>("seed", 0)))
 {
+    // The keys read above
+    dictKeys::warnUnknown
+    (
+        dict,
+        {"legacyTimeScale", "delta", "Cs", "C0", "seed"}
+    );
+
     if (dict.found("delta") && delta_ <= 0)
     {
         FatalIOErrorInFunction(dict)

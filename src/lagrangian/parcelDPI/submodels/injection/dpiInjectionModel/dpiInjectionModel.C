@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "dpiInjectionModel.H"
+#include "dictKeys.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -18,13 +19,19 @@ namespace Foam
 Foam::dpiInjectionModel::dpiInjectionModel
 (
     const word& name,
-    const dictionary& dict
+    const dictionary& dict,
+    const wordList& modelKeys
 )
 :
     name_(name),
     dict_(dict),
     SOI_(dict.lookupOrDefault<scalar>("SOI", 0))
-{}
+{
+    // type is read by the selector New
+    wordList known({"type", "SOI"});
+    known.append(modelKeys);
+    dictKeys::warnUnknown(dict, known);
+}
 
 
 // * * * * * * * * * * * * * * * * * Selector  * * * * * * * * * * * * * * * //

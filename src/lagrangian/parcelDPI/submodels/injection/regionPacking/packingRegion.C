@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "packingRegion.H"
+#include "dictKeys.H"
 #include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -70,6 +71,30 @@ Foam::packingRegion::packingRegion(const dictionary& dict)
     e1_(1, 0, 0),
     e2_(0, 1, 0)
 {
+    // The keys each shape reads below; checked first so that a misspelt
+    // one is named before the error for the missing entry
+    wordList known({"shape"});
+    if (shapeName_ == "sphere")
+    {
+        known.append(wordList({"centre", "radius"}));
+    }
+    else if (shapeName_ == "box")
+    {
+        known.append(wordList({"min", "max"}));
+    }
+    else if (shapeName_ == "cylinder")
+    {
+        known.append(wordList({"point1", "point2", "radius"}));
+    }
+    else if (shapeName_ == "cone")
+    {
+        known.append(wordList({"point1", "point2", "radius1", "radius2"}));
+    }
+    if (known.size() > 1)
+    {
+        dictKeys::warnUnknown(dict, known);
+    }
+
     if (shapeName_ == "sphere")
     {
         shape_ = shapeType::sphere;

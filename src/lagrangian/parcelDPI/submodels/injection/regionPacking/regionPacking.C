@@ -4,6 +4,7 @@
 
 #include "regionPacking.H"
 #include "demMaterials.H"
+#include "dictKeys.H"
 #include "mathematicalConstants.H"
 #include "addToRunTimeSelectionTable.H"
 #include <algorithm>
@@ -194,7 +195,16 @@ Foam::dpiInjectionModels::regionPacking::regionPacking
     const demMaterials* materials
 )
 :
-    dpiInjectionModel(name, dict),
+    dpiInjectionModel
+    (
+        name,
+        dict,
+        {
+            "region", "fractions", "basis", "volumeFraction", "nParticles",
+            "seed", "U", "omega", "exclude", "avoidInjected",
+            "countObstacles", "maxAttempts"
+        }
+    ),
     region_(dict.subDict("region")),
     types_(),
     massBasis_(false),
@@ -284,10 +294,14 @@ Foam::dpiInjectionModels::regionPacking::regionPacking
 
     if (dict.found("exclude"))
     {
-        const List<dictionary> ex(dict.get<List<dictionary>>("exclude"));
+        List<dictionary> ex(dict.get<List<dictionary>>("exclude"));
         exclude_.setSize(ex.size());
         forAll(ex, k)
         {
+            // Named after its place, for the warning
+            ex[k].name() = dict.name() + ".exclude[" + Foam::name(k) + "]";
+            dictKeys::warnUnknown(ex[k], {"centre", "radius"});
+
             exclude_[k].centre = ex[k].get<point>("centre");
             exclude_[k].radius = ex[k].get<scalar>("radius");
             if (!(exclude_[k].radius > 0))

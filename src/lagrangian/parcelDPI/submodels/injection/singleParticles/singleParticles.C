@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "singleParticles.H"
+#include "dictKeys.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -26,10 +27,10 @@ Foam::dpiInjectionModels::singleParticles::singleParticles
     const demMaterials*
 )
 :
-    dpiInjectionModel(name, dict),
+    dpiInjectionModel(name, dict, {"particles"}),
     particles_()
 {
-    const List<dictionary> entries(dict.get<List<dictionary>>("particles"));
+    List<dictionary> entries(dict.get<List<dictionary>>("particles"));
 
     if (entries.empty())
     {
@@ -41,7 +42,11 @@ Foam::dpiInjectionModels::singleParticles::singleParticles
     particles_.setSize(entries.size());
     forAll(entries, i)
     {
-        const dictionary& e = entries[i];
+        // Named after its place, for this warning and the errors below
+        dictionary& e = entries[i];
+        e.name() = dict.name() + ".particles[" + Foam::name(i) + "]";
+        dictKeys::warnUnknown(e, {"position", "U", "omega", "type", "d"});
+
         injectionSpec& p = particles_[i];
         p.position = e.get<point>("position");
         p.U = e.lookupOrDefault<vector>("U", Zero);

@@ -22,7 +22,7 @@ namespace dpiVoidFractions
 
 Foam::dpiVoidFractions::apiParcel::apiParcel(const dictionary& dict)
 :
-    dpiVoidFraction(dict)
+    dpiVoidFraction(dict, wordList())    // reads no other keys
 {}
 
 

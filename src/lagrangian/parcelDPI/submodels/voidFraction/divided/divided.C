@@ -22,7 +22,7 @@ namespace dpiVoidFractions
 
 Foam::dpiVoidFractions::divided::divided(const dictionary& dict)
 :
-    dpiVoidFraction(dict)
+    dpiVoidFraction(dict, wordList())    // reads no other keys
 {}
 
 

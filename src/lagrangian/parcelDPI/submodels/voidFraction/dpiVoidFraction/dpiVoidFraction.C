@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "dpiVoidFraction.H"
+#include "dictKeys.H"
 #include "polyMesh.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -43,11 +44,21 @@ Foam::scalar Foam::dpiVoidFraction::readAlphaMin(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::dpiVoidFraction::dpiVoidFraction(const dictionary& dict)
+Foam::dpiVoidFraction::dpiVoidFraction
+(
+    const dictionary& dict,
+    const wordList& modelKeys
+)
 :
     dict_(dict),
     alphaMin_(readAlphaMin(dict))
-{}
+{
+    // type is read by the selector New; the retired scaleUpVol has its
+    // own error in readAlphaMin
+    wordList known({"type", "alphaMin"});
+    known.append(modelKeys);
+    dictKeys::warnUnknown(dict, known);
+}
 
 
 // * * * * * * * * * * * * * * * * * Selector  * * * * * * * * * * * * * * * //

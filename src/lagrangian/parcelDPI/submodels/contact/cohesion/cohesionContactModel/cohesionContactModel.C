@@ -3,6 +3,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "cohesionContactModel.H"
+#include "dictKeys.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -18,11 +19,14 @@ namespace Foam
 Foam::cohesionContactModel::cohesionContactModel
 (
     const dictionary& dict,
-    const word& type
+    const word& type,
+    const wordList& coeffKeys
 )
 :
     coeffDict_(dict.subOrEmptyDict(type + "Coeffs"))
-{}
+{
+    dictKeys::warnUnknown(coeffDict_, coeffKeys);
+}
 
 
 // * * * * * * * * * * * * * * * * * Selector  * * * * * * * * * * * * * * * //

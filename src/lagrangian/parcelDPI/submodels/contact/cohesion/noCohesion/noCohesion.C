@@ -21,7 +21,7 @@ namespace cohesionContactModels
 
 Foam::cohesionContactModels::noCohesion::noCohesion(const dictionary& dict)
 :
-    cohesionContactModel(dict, typeName)
+    cohesionContactModel(dict, typeName, wordList())    // reads no coefficients
 {}
 
 

@@ -307,9 +307,26 @@ void Foam::cohesionContactModels::vdwGuParcel::checkContinuity
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
+const Foam::wordList Foam::cohesionContactModels::vdwGuParcel::coeffKeys
+({
+    "chi",
+    "wallCohesion",
+    "pairs"
+});
+
+
+const Foam::wordList Foam::cohesionContactModels::vdwGuParcel::pairKeys
+({
+    "hamakerConstant",
+    "sMin",
+    "sMins",
+    "s0"
+});
+
+
 Foam::cohesionContactModels::vdwGuParcel::vdwGuParcel(const dictionary& dict)
 :
-    cohesionContactModel(dict, typeName),
+    cohesionContactModel(dict, typeName, coeffKeys),
     chi_(1),
     nTypes_(0),
     pairs_(),
@@ -344,8 +361,9 @@ Foam::cohesionContactModels::vdwGuParcel::vdwGuParcel(const dictionary& dict)
 
     wallCohesion_ = coeffDict_.getOrDefault<bool>("wallCohesion", true);
 
-    // Types as the engine reads them (same dictionary, same order)
-    const demMaterials mat(dict);
+    // Types as the engine reads them (same dictionary, same order); the
+    // engine's own table has warned about unknown keys already
+    const demMaterials mat(dict, false);
     const wordList& names = mat.names();
     const label n = names.size();
     nTypes_ = n;
@@ -380,6 +398,7 @@ Foam::cohesionContactModels::vdwGuParcel::vdwGuParcel(const dictionary& dict)
     }
     const dictionary& pairsDict = *pairsDictPtr;
     const typePairDicts pairDicts(pairsDict, names);
+    pairDicts.warnUnknownKeys(pairKeys);
     const dictionary* defaultDict = pairDicts.defaultDict();
 
     pairs_.setSize(n*n);

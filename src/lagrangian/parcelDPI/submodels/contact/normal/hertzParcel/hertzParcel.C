@@ -19,9 +19,16 @@ namespace normalContactModels
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
+const Foam::wordList Foam::normalContactModels::hertzParcel::coeffKeys
+({
+    "limitForce",
+    "tangentialDamping"
+});
+
+
 Foam::normalContactModels::hertzParcel::hertzParcel(const dictionary& dict)
 :
-    normalContactModel(dict, typeName),
+    normalContactModel(dict, typeName, coeffKeys),
     limitForce_(coeffDict_.getOrDefault<bool>("limitForce", false)),
     tangentialDamping_
     (

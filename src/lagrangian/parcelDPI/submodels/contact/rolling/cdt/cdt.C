@@ -19,9 +19,15 @@ namespace rollingContactModels
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
+const Foam::wordList Foam::rollingContactModels::cdt::coeffKeys
+({
+    "scaleTorqueWithN"
+});
+
+
 Foam::rollingContactModels::cdt::cdt(const dictionary& dict)
 :
-    rollingContactModel(dict, typeName),
+    rollingContactModel(dict, typeName, coeffKeys),
     scaleTorqueWithN_(coeffDict_.getOrDefault<bool>("scaleTorqueWithN", true))
 {}
 

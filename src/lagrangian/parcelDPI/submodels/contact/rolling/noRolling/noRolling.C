@@ -21,7 +21,7 @@ namespace rollingContactModels
 
 Foam::rollingContactModels::noRolling::noRolling(const dictionary& dict)
 :
-    rollingContactModel(dict, typeName)
+    rollingContactModel(dict, typeName, wordList())    // reads no coefficients
 {}
 
 

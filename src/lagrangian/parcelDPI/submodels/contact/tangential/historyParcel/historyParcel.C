@@ -29,7 +29,7 @@ Foam::tangentialContactModels::historyParcel::historyParcel
     const dictionary& dict
 )
 :
-    tangentialContactModel(dict, typeName)
+    tangentialContactModel(dict, typeName, wordList())    // reads no coefficients
 {}
 
 
