@@ -142,6 +142,24 @@ int main(int argc, char *argv[])
     }
 
     Info<< "Constructing cloud " << cloudName << endl;
+    // The stock KinematicCloud builds its sub-models before dpiFoam's
+    // cloud can look at them: say first where a DPMFoam-style model goes
+    basicDPICloud::checkStockModels
+    (
+        IOdictionary
+        (
+            IOobject
+            (
+                cloudName + "Properties",
+                runTime.constant(),
+                mesh,
+                IOobject::MUST_READ,
+                IOobject::NO_WRITE,
+                false
+            )
+        )
+    );
+
     basicDPICloud cloud
     (
         cloudName,

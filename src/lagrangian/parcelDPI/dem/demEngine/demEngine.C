@@ -1297,7 +1297,6 @@ void Foam::demEngine::evolve
     }
 
     checkState(s);
-    diag_.resetStep();
 
     // Only owned rows are integrated; ghosts (halo copies) are refreshed
     // by the halo from their owners
