@@ -39,7 +39,7 @@ vt = (rhop - rhof)*g*d**2/(18*mu)
 for _ in range(50):
     Re = d*vt/nuf
     vt = (rhop - rhof)*g*d**2/(18*mu*(1 + 0.15*Re**0.687))
-print("reference: Wen-Yu v_t = %.5e m/s (theory 1.1405e-3), tau_p = %.5e s"
+print("reference: Wen-Yu v_t = %.5e m/s (doc/theory.md 8.5: 1.1405e-3), tau_p = %.5e s"
       % (vt, rhop*d**2/(18*mu)))
 
 for run in ["held_N1", "held_N10", "held_N100", "subStep_N1"]:
