@@ -1,6 +1,10 @@
 /*---------------------------------------------------------------------------*\
   dpiFoam: unit tests of the vdwGuParcel cohesion model in the DEM engine
 -------------------------------------------------------------------------------
+License
+    This file is part of dpiFoam, distributed under the GNU General Public
+    License version 3 or (at your option) any later version; see LICENSE.
+
 Description
     The user guide's Case 3 (a carrier and an API released touching and at
     rest, no gravity, A = 5e-19 J) against theory 8.4: equilibrium overlap,

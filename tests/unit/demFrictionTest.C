@@ -1,6 +1,10 @@
 /*---------------------------------------------------------------------------*\
   dpiFoam: unit tests of friction and rolling resistance (theory 8.3)
 -------------------------------------------------------------------------------
+License
+    This file is part of dpiFoam, distributed under the GNU General Public
+    License version 3 or (at your option) any later version; see LICENSE.
+
 Description
     A sphere sliding on a plane under gravity (historyParcel) and a sphere
     rolling on a plane (cdt), for a primary (N = 1) and a parcel (N = 100)
