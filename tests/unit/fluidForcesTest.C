@@ -1,5 +1,5 @@
 /*---------------------------------------------------------------------------*\
-  dpiFoam: unit tests of the gas-particle force models (issue 5)
+  dpiFoam: unit tests of the gas-particle force models
 -------------------------------------------------------------------------------
 License
     This file is part of dpiFoam, distributed under the GNU General Public

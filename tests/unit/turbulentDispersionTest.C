@@ -1,5 +1,5 @@
 /*---------------------------------------------------------------------------*\
-  dpiFoam: unit tests of the LES subgrid turbulent dispersion (issue 5)
+  dpiFoam: unit tests of the LES subgrid turbulent dispersion
 -------------------------------------------------------------------------------
 License
     This file is part of dpiFoam, distributed under the GNU General Public

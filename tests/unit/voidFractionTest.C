@@ -1,5 +1,5 @@
 /*---------------------------------------------------------------------------*\
-  dpiFoam: unit tests of the void-fraction models (issue 5)
+  dpiFoam: unit tests of the void-fraction models
 -------------------------------------------------------------------------------
 License
     This file is part of dpiFoam, distributed under the GNU General Public
