@@ -1,6 +1,10 @@
 /*---------------------------------------------------------------------------*\
   dpiFoam: unit tests of the vdwGuParcel cohesion model in the DEM engine
 -------------------------------------------------------------------------------
+License
+    This file is part of dpiFoam, distributed under the GNU General Public
+    License version 3 or (at your option) any later version; see LICENSE.
+
 Description
     The user guide's Case 3 (a carrier and an API released touching and at
     rest, no gravity, A = 5e-19 J) against theory 8.4: equilibrium overlap,
@@ -257,11 +261,11 @@ reboundResult rebound(const scalar N, const bool wall, const scalar v0)
 
 
 // Case 3 (theory 8.4): equilibrium overlap 2.2315e-9 m (given to 5 digits;
-// the tolerance 1 %); the first peak 3.869e-9 m (N = 1, 4 digits;
+// required to 1 %); the first peak 3.869e-9 m (N = 1, 4 digits;
 // 1 %: at dt = 1e-9 s there are ~310 steps per period, Verlet's amplitude
 // error O((omega dt)^2) ~ 4e-4); the period 3.16e-7 s at the start and
 // 3.11e-7 s later for N = 1, 3.10e-7 -> 3.06e-7 s for N = 100 (3 digits;
-// the 5 %). N = 10 is between (m_dyn differs from N = 1 by 0.3 %).
+// required to 5 %). N = 10 is between (m_dyn differs from N = 1 by 0.3 %).
 //
 // Identical equilibrium for N = 1, 10, 100: a force balance S F_Hertz =
 // S F_coh, independent of the masses. After 2e-5 s the oscillation has
@@ -337,7 +341,7 @@ TEST(vdwGuParcel, case3WeakerHamakerConstant)
 // the escape speed ~0.105 m/s of theory 8.4's separation work 5.53e-16 J):
 // the cohesive well does ~27 % of the kinetic energy in work each way, so
 // a non-conservative law would miss by far more than the tolerance (the
-// issue's 1e-4 on the speed). What the integration does not conserve:
+// required 1e-4 on the speed). What the integration does not conserve:
 // the jump at sMins (0.07 % of F_S = 4e-11 N over one step of v dt:
 // < 1e-20 J against 2e-15 J) and, dominant, velocity Verlet crossing the
 // onset of the Hertz force k delta^1.5, which is not smooth: an error of

@@ -1,6 +1,10 @@
 /*---------------------------------------------------------------------------*\
   dpiFoam: unit tests of friction and rolling resistance (theory 8.3)
 -------------------------------------------------------------------------------
+License
+    This file is part of dpiFoam, distributed under the GNU General Public
+    License version 3 or (at your option) any later version; see LICENSE.
+
 Description
     A sphere sliding on a plane under gravity (historyParcel) and a sphere
     rolling on a plane (cdt), for a primary (N = 1) and a parcel (N = 100)
@@ -149,7 +153,7 @@ scalar rollingDeceleration
 // and spins the sphere up until rolling without slip at
 // t = 2 v0/(7 mu g) with speed 5 v0/7 (rigid-body result). The history
 // spring adds small oscillations and the step is 1e-5 s = 0.15 % of that
-// time, so 2 % (the figure) is ample and fails for a wrong cap, a
+// time, so 2 % (the required tolerance) is ample and fails for a wrong cap, a
 // wrong torque sign or a missing lever arm.
 TEST(demFriction, slidingSphereReachesRolling)
 {
@@ -192,7 +196,7 @@ TEST(demFriction, slidingSphereReachesRolling)
 // CDT: rolling without slip, the constant torque mu_r (k_n delta) c with
 // k_n delta = m g decelerates the sphere at (5/7) mu_r g (theory 8.3).
 // The fit over 90 ms of a 140 ms roll averages the spring oscillation;
-// 2 % is the tolerance.
+// 2 % is the required tolerance.
 TEST(demFriction, cdtRollingDeceleration)
 {
     FatalError.throwExceptions();

@@ -1,6 +1,10 @@
 /*---------------------------------------------------------------------------*\
   dpiFoam: unit tests of the DEM engine on single impacts
 -------------------------------------------------------------------------------
+License
+    This file is part of dpiFoam, distributed under the GNU General Public
+    License version 3 or (at your option) any later version; see LICENSE.
+
 Description
     The user guide's Cases 1 (API onto a wall, 3 m/s) and 2 (two API at
     +-1 m/s) at a resolved step, against the damped Hertz references of

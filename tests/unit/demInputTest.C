@@ -1,6 +1,10 @@
 /*---------------------------------------------------------------------------*\
   dpiFoam: unit tests of the DEM input: materials table and bad input
 -------------------------------------------------------------------------------
+License
+    This file is part of dpiFoam, distributed under the GNU General Public
+    License version 3 or (at your option) any later version; see LICENSE.
+
 Description
     Effective properties of the guide's material (theory 1.2), the Hertz
     contact time of theory 7.2, and clear errors for bad input: unknown

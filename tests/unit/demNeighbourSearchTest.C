@@ -1,6 +1,10 @@
 /*---------------------------------------------------------------------------*\
   dpiFoam: unit tests of the DEM neighbour search and contact history
 -------------------------------------------------------------------------------
+License
+    This file is part of dpiFoam, distributed under the GNU General Public
+    License version 3 or (at your option) any later version; see LICENSE.
+
 Description
     The hierarchical-grid Verlet list must hold every pair a brute-force
     O(n^2) search finds, for a random polydisperse cloud of carriers

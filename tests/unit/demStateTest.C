@@ -1,5 +1,9 @@
 /*---------------------------------------------------------------------------*\
   dpiFoam: unit test of the DEM state arrays
+-------------------------------------------------------------------------------
+License
+    This file is part of dpiFoam, distributed under the GNU General Public
+    License version 3 or (at your option) any later version; see LICENSE.
 \*---------------------------------------------------------------------------*/
 
 #include <gtest/gtest.h>

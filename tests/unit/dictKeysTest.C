@@ -1,6 +1,10 @@
 /*---------------------------------------------------------------------------*\
   dpiFoam: unit tests of the unknown-key warnings (dictKeys)
 -------------------------------------------------------------------------------
+License
+    This file is part of dpiFoam, distributed under the GNU General Public
+    License version 3 or (at your option) any later version; see LICENSE.
+
 Description
     A key no reader asks for is counted (and warned about), with the
     closest known key suggested when it is a likely typo and none when it

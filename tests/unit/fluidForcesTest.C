@@ -1,6 +1,10 @@
 /*---------------------------------------------------------------------------*\
-  dpiFoam: unit tests of the gas-particle force models (issue 5)
+  dpiFoam: unit tests of the gas-particle force models
 -------------------------------------------------------------------------------
+License
+    This file is part of dpiFoam, distributed under the GNU General Public
+    License version 3 or (at your option) any later version; see LICENSE.
+
 Description
     wenYuParcel against theory 4.1 and 8.5: Stokes limit 3 pi mu d u_r
     alpha^-2.65 (model A), the Wen-Yu correction and the Re >= 1000 branch,

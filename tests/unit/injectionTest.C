@@ -1,5 +1,9 @@
 /*---------------------------------------------------------------------------*\
   dpiFoam: unit tests of the injection models (what and when to inject)
+-------------------------------------------------------------------------------
+License
+    This file is part of dpiFoam, distributed under the GNU General Public
+    License version 3 or (at your option) any later version; see LICENSE.
 \*---------------------------------------------------------------------------*/
 
 #include <gtest/gtest.h>

@@ -1,6 +1,10 @@
 /*---------------------------------------------------------------------------*\
   dpiFoam: unit tests of the regionPacking injection model
 -------------------------------------------------------------------------------
+License
+    This file is part of dpiFoam, distributed under the GNU General Public
+    License version 3 or (at your option) any later version; see LICENSE.
+
 Description
     Region packing in a sphere, box, cylinder and cone: achieved solid
     fraction, no overlaps, every particle wholly inside (checked with

@@ -1,6 +1,10 @@
 /*---------------------------------------------------------------------------*\
-  dpiFoam: unit tests of the LES subgrid turbulent dispersion (issue 5)
+  dpiFoam: unit tests of the LES subgrid turbulent dispersion
 -------------------------------------------------------------------------------
+License
+    This file is part of dpiFoam, distributed under the GNU General Public
+    License version 3 or (at your option) any later version; see LICENSE.
+
 Description
     dpiTurbulentDispersion against theory 4.2 and 8.6:
     - closures: k = 5 Cs^2 Delta^2 |S|^2 and tau* = C_L k/((nu + nu_e)|S|^2)

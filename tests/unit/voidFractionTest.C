@@ -1,6 +1,10 @@
 /*---------------------------------------------------------------------------*\
-  dpiFoam: unit tests of the void-fraction models (issue 5)
+  dpiFoam: unit tests of the void-fraction models
 -------------------------------------------------------------------------------
+License
+    This file is part of dpiFoam, distributed under the GNU General Public
+    License version 3 or (at your option) any later version; see LICENSE.
+
 Description
     The 29 representative points of theory 5.1 (one centre, 14 per shell
     radius, centroid at the centre, all inside the sphere); divided removes

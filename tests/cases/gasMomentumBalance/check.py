@@ -16,7 +16,7 @@ import numpy as np
 RHO = 1.2                       # gas density [kg/m^3]
 V = (0.8e-3/4)**3               # cell volume of the uniform mesh [m^3]
 G = np.array([0.0, 0.0, -9.81])
-# Tolerances per step: of the parcels' initial momentum P0 (the issue's 1e-6)
+# Tolerances per step: of the parcels' initial momentum P0 (1e-6, required)
 # and of the momentum exchanged in the step (from the command line; the run
 # script loosens the second for the unconverged 2-corrector variant)
 COMPARE = len(sys.argv) > 1 and sys.argv[1] == "--compare"

@@ -1,6 +1,10 @@
 /*---------------------------------------------------------------------------*\
   dpiFoam: CFD-DEM for dry powder inhalers
 -------------------------------------------------------------------------------
+License
+    This file is part of dpiFoam, distributed under the GNU General Public
+    License version 3 or (at your option) any later version; see LICENSE.
+-------------------------------------------------------------------------------
     Every field appears in: the Istream constructor (ASCII, non-native and
     native binary), operator<<, readFields/writeFields, readObjects/
     writeObjects and transformProperties. A field missing in one of them is
