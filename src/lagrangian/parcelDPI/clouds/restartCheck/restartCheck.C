@@ -35,39 +35,6 @@ namespace
         return mag(a - b) <= 1e-6*max(mag(a), mag(b));
     }
 
-    // One processor's reason to refuse (or empty): the first one found on
-    // any processor is reported once, by the master, and all stop together
-    void refuseIfAny(const string& reason, const dictionary& context)
-    {
-        List<string> all(Pstream::nProcs());
-        all[Pstream::myProcNo()] = reason;
-        Pstream::gatherList(all);
-
-        string first;
-        if (Pstream::master())
-        {
-            for (const string& r : all)
-            {
-                if (r.size())
-                {
-                    first = r;
-                    break;
-                }
-            }
-        }
-        Pstream::scatter(first);
-        if (first.empty())
-        {
-            return;
-        }
-        if (!Pstream::master())
-        {
-            Pstream::exit(1);
-        }
-        FatalIOErrorInFunction(context)
-            << first.c_str() << exit(FatalIOError);
-    }
-
     // Per written type index: parcels, smallest and largest diameter
     // (global)
     void typeStats
@@ -302,6 +269,42 @@ Foam::labelList Foam::restartCheck::mapTypes
             << endl;
     }
     return newIndex;
+}
+
+
+void Foam::restartCheck::refuseIfAny
+(
+    const string& reason,
+    const dictionary& context
+)
+{
+    List<string> all(Pstream::nProcs());
+    all[Pstream::myProcNo()] = reason;
+    Pstream::gatherList(all);
+
+    string first;
+    if (Pstream::master())
+    {
+        for (const string& r : all)
+        {
+            if (r.size())
+            {
+                first = r;
+                break;
+            }
+        }
+    }
+    Pstream::scatter(first);
+    if (first.empty())
+    {
+        return;
+    }
+    if (!Pstream::master())
+    {
+        Pstream::exit(1);
+    }
+    FatalIOErrorInFunction(context)
+        << first.c_str() << exit(FatalIOError);
 }
 
 

@@ -407,22 +407,7 @@ void Foam::DPICloud<CloudType>::checkRestartCloud(const dictionary& dpiDict)
         xi.setSize(n);
     }
 
-    List<string> reasons(Pstream::nProcs());
-    reasons[Pstream::myProcNo()] = reason;
-    Pstream::gatherList(reasons);
-    Pstream::scatterList(reasons);
-    for (const string& r : reasons)
-    {
-        if (r.size())
-        {
-            if (!Pstream::master())
-            {
-                Pstream::exit(1);
-            }
-            FatalIOErrorInFunction(this->outputProperties())
-                << r.c_str() << exit(FatalIOError);
-        }
-    }
+    restartCheck::refuseIfAny(reason, this->outputProperties());
 
     reduce(nDropped, sumOp<label>());
     if (nDropped)
