@@ -11,6 +11,14 @@ component along the axis (Case 1: time y vy fy; Case 2: time, overlap,
 z1 z2 vz1 vz2 fz1 fz2 when --overlap-diameter is given), and it draws
 <prefix>_position.png and <prefix>_force.png with one line per run, like the
 guide's figures (position in um, force in N, time in us).
+
+With --overlap-diameter d and two parcels it also draws <prefix>_overlap.png,
+the overlap normalised by d, (d - |x1 - x2|)/d, against time for every run
+(the guide's Case 2 Figure 6 and its Eq. (1): negative while the particles
+approach, positive in contact), and prints per run the contact (where the
+normalised overlap crosses zero, interpolated between steps), its peak, the
+peak force on parcel 1 along the axis and the restitution coefficient
+(relative speed along the axis at the end over that at the start).
 """
 import argparse
 import glob
@@ -32,6 +40,13 @@ def read_trace(run, pid):
     return np.vstack([np.loadtxt(f, ndmin=2) for f in files])
 
 
+def zero_crossings(t, y):
+    """Times where y changes sign, linearly interpolated between samples"""
+    s = np.sign(y)
+    i = np.nonzero(s[:-1]*s[1:] < 0)[0]
+    return t[i] - y[i]*(t[i+1] - t[i])/(y[i+1] - y[i])
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--axis", default="y", choices=AXES)
@@ -45,6 +60,9 @@ def main():
     c = AXES[a.axis]
 
     fig1, ax1 = plt.subplots(figsize=(6, 4))
+    overlap = a.overlap_diameter is not None and len(a.parcels) == 2
+    if overlap:
+        fig3, ax3 = plt.subplots(figsize=(6, 4))
     # forces differ by N: one panel per run, as the guide's figures
     fig2, axes2 = plt.subplots(len(a.runs), 1, figsize=(6, 3*len(a.runs)),
                                sharex=True, squeeze=False)
@@ -59,6 +77,20 @@ def main():
             dist = np.linalg.norm(tr[0][:, 1:4] - tr[1][:, 1:4], axis=1)
             cols.append(a.overlap_diameter - dist)
             header += " overlap"
+            ov = (a.overlap_diameter - dist)/a.overlap_diameter
+            ax3.plot(t*1e6, ov, label=run,
+                     ls="-" if run == a.runs[0] else "--")
+            tz = zero_crossings(t, ov)
+            f1 = tr[0][:, 7 + c]
+            dv0 = tr[1][0, 4 + c] - tr[0][0, 4 + c]
+            dv1 = tr[1][-1, 4 + c] - tr[0][-1, 4 + c]
+            contact = ("contact %.4g to %.4g us (%.4g us)"
+                       % (tz[0]*1e6, tz[1]*1e6, (tz[1] - tz[0])*1e6)
+                       if len(tz) >= 2 else "contact not closed")
+            print("%s: %s, peak overlap/d %.4g at %.4g us, peak |f%s1| "
+                  "%.4g N, restitution %.4g, %d steps to t = %.4g us"
+                  % (run, contact, ov.max(), t[np.argmax(ov)]*1e6, a.axis,
+                     np.abs(f1).max(), abs(dv1/dv0), len(t), t[-1]*1e6))
         for k, p in enumerate(a.parcels):
             cols.append(tr[k][:, 1 + c])
             header += " %s%d" % (a.axis, p + 1)
@@ -78,6 +110,8 @@ def main():
             axes2[r, 0].plot(t*1e6, tr[k][:, 7 + c], label=label)
 
     panels = [(ax1, "position", a.axis + " [um]")]
+    if overlap:
+        panels.append((ax3, "overlap", "(d - |x1 - x2|)/d [-]"))
     panels += [(ax, "force", "f" + a.axis + " [N]") for ax in axes2[:, 0]]
     for ax, what, unit in panels:
         ax.set_xlabel("time [us]")
@@ -85,7 +119,10 @@ def main():
         ax.set_title("%s: %s" % (a.title, what) if a.title else what)
         ax.grid(True, alpha=0.3)
         ax.legend()
-    for fig, what in ((fig1, "position"), (fig2, "force")):
+    figs = [(fig1, "position"), (fig2, "force")]
+    if overlap:
+        figs.append((fig3, "overlap"))
+    for fig, what in figs:
         fig.tight_layout()
         fig.savefig("%s_%s.png" % (a.prefix, what), dpi=120)
         print("wrote %s_%s.png" % (a.prefix, what))
