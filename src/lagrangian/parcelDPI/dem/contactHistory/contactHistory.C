@@ -161,6 +161,34 @@ void Foam::contactHistory::load
 }
 
 
+void Foam::contactHistory::toNear(const labelUList& nearK)
+{
+    nearXi_.setSize(nearK.size());
+    nearHasXi_.setSize(nearK.size());
+    forAll(nearK, m)
+    {
+        nearXi_[m] = pairXi_[nearK[m]];
+        nearHasXi_[m] = pairHasXi_[nearK[m]];
+    }
+}
+
+
+void Foam::contactHistory::syncPairs(const labelUList& nearK)
+{
+    if (nearK.size() != nearXi_.size())
+    {
+        return;
+    }
+    pairXi_ = Zero;
+    pairHasXi_ = false;
+    forAll(nearK, m)
+    {
+        pairXi_[nearK[m]] = nearXi_[m];
+        pairHasXi_[nearK[m]] = nearHasXi_[m];
+    }
+}
+
+
 void Foam::contactHistory::flush
 (
     const labelUList& pairRow,

@@ -136,6 +136,11 @@ void Foam::demEngine::checkState(const demState& s) const
 
 void Foam::demEngine::flushHistory()
 {
+    if (!history_.workingValid())
+    {
+        return;
+    }
+    pairs_.syncHistory(history_);
     history_.flush(pairs_.rows(), pairs_.starts(), pairs_.partners());
 }
 
@@ -151,13 +156,30 @@ void Foam::demEngine::rebuild(const demState& s)
     {
         rMax = max(rMax, r);
     }
-    const scalar range = models_.maxRange(rMax);
 
-    pairs_.build(s, models_, range);
-    walls_.findCandidates(s, models_, rMax, range, pairs_.search().skin());
+    pairs_.build(s, models_, models_.maxRange(rMax));
     history_.load(s.globalId, pairs_.rows(), pairs_.starts(), pairs_.partners());
+    buildNear(s);
 
     timeNeighbour_ += wallClock() - t0;
+}
+
+
+void Foam::demEngine::buildNear(const demState& s)
+{
+    pairs_.buildNear(s, timeStep_, history_);
+
+    // The wall candidates within the near skin: valid as long as the near
+    // list (no row has moved more than half the near skin)
+    scalar rMax = 0;
+    for (const scalar r : s.r)
+    {
+        rMax = max(rMax, r);
+    }
+    walls_.findCandidates
+    (
+        s, models_, rMax, models_.maxRange(rMax), pairs_.nearSkin()
+    );
 }
 
 
@@ -182,6 +204,10 @@ void Foam::demEngine::evaluate
     }
     else
     {
+        if (!pairs_.nearValid(s))
+        {
+            buildNear(s);
+        }
         timeNeighbour_ += wallClock() - t0;
     }
 
@@ -622,7 +648,9 @@ void Foam::demEngine::writePerformance(Ostream& os) const
         << "    pair " << timePair_ << " s (" << pct(timePair_) << " %), "
         << "wall " << timeWall_ << " s (" << pct(timeWall_) << " %), "
         << "neighbour " << timeNeighbour_ << " s (" << pct(timeNeighbour_)
-        << " %, " << pairs_.search().nBuilds() << " builds), "
+        << " %, " << pairs_.search().nBuilds() << " builds, "
+        << pairs_.nNearBuilds() << " near builds, " << pairs_.nNear()
+        << " of " << pairs_.nListed() << " listed pairs near), "
         << "integrate " << timeIntegrate_ << " s ("
         << pct(timeIntegrate_) << " %)" << endl;
 }

@@ -26,8 +26,8 @@ void Foam::pairContacts::forces
 ) const
 {
     const label nOwned = s.owned();
-    List<vector>& pairXi = h.pairXi();
-    List<bool>& pairHasXi = h.pairHasXi();
+    List<vector>& pairXi = h.nearXi();
+    List<bool>& pairHasXi = h.nearHasXi();
 
     demContact c;
     c.wall = false;
@@ -37,10 +37,11 @@ void Foam::pairContacts::forces
     c.dt = dt;
 
     // Pairs out of range add nothing: adding zeros would not change a sum
-    // (which is never -0, starting from +0), so skipping them changes no bit.
+    // (which is never -0, starting from +0), so skipping them changes no bit
+    // (nor does leaving them out of the near list).
     // The partners' positions are read in no spatial order (the rows are
     // in the cloud's order): ask for them a few pairs ahead
-    const label np = pairJ_.size();
+    const label nNear = nearJ_.size();
     const label ahead = 16;
 
     forAll(pairRow_, a)
@@ -48,20 +49,21 @@ void Foam::pairContacts::forces
         const label i = pairRow_[a];
         const point xi0 = s.x[i];
 
-        for (label k = pairStart_[a]; k < pairStart_[a + 1]; ++k)
+        for (label m = nearStart_[a]; m < nearStart_[a + 1]; ++m)
         {
-            if (k + ahead < np)
+            if (m + ahead < nNear)
             {
-                __builtin_prefetch(&s.x[pairJ_[k + ahead]]);
+                __builtin_prefetch(&s.x[nearJ_[m + ahead]]);
             }
 
-            const label j = pairJ_[k];
+            const label j = nearJ_[m];
 
             const vector d(xi0 - s.x[j]);
             const scalar r2 = magSqr(d);
 
-            if (r2 >= pairCut2_[k])
+            if (r2 >= nearCut2_[m])
             {
+                const label k = m;
                 if (advance && pairHasXi[k])
                 {
                     pairXi[k] = Zero;
@@ -83,6 +85,7 @@ void Foam::pairContacts::forces
             c.mstar = s.m[i]*s.m[j]/(s.m[i] + s.m[j]);
 
             const scalar S = pairScaling::pair(s.N[i], s.N[j]);
+            const label k = m;
 
             if (!c.touching())
             {

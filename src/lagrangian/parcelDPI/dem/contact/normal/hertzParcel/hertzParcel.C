@@ -43,26 +43,6 @@ Foam::normalContactModels::hertzParcel::hertzParcel(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::scalar Foam::normalContactModels::hertzParcel::force
-(
-    const demContact& c,
-    scalar& fElastic
-) const
-{
-    const scalar sqrtRd = sqrt(c.Rstar*c.delta);
-    const scalar kn = (4.0/3.0)*c.props->Ystar*sqrtRd;
-    const scalar Sn = 2*c.props->Ystar*sqrtRd;
-
-    // gammaN >= 0 because beta <= 0
-    const scalar gammaN = -2*sqrt(5.0/6.0)*c.props->beta*sqrt(Sn*c.mstar);
-
-    fElastic = kn*c.delta;
-
-    const scalar fn = fElastic - gammaN*c.vn;
-
-    return (limitForce_ && fn < 0) ? 0 : fn;
-}
-
 
 Foam::scalar Foam::normalContactModels::hertzParcel::contactTime
 (

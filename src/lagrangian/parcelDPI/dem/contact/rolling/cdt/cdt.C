@@ -38,29 +38,5 @@ Foam::rollingContactModels::cdt::cdt(const dictionary& dict)
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::vector Foam::rollingContactModels::cdt::torque
-(
-    const demContact& c,
-    const scalar fElastic
-) const
-{
-    const scalar magOmega = mag(c.omegaRel);
-
-    if (magOmega <= 0 || c.props->muR <= 0)
-    {
-        return Zero;
-    }
-
-    // The lever arm: R* for pairs, the contact-point distance for walls
-    const scalar arm = c.wall ? c.ci : c.Rstar;
-
-    vector M((c.props->muR*fElastic*arm/magOmega)*c.omegaRel);
-
-    // No resistance to twisting about the normal
-    M -= (M & c.n)*c.n;
-
-    return -M;
-}
-
 
 // ************************************************************************* //

@@ -39,47 +39,5 @@ Foam::tangentialContactModels::historyParcel::historyParcel
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::vector Foam::tangentialContactModels::historyParcel::force
-(
-    const demContact& c,
-    const scalar fn,
-    const bool damping,
-    vector& xi
-) const
-{
-    // Accumulate the slip, then keep only the part in the tangent plane
-    // (the contact normal rotates while the particles roll over each other)
-    xi += c.vs*c.dt;
-    xi -= (xi & c.n)*c.n;
-
-    const scalar kt = 8*c.props->Gstar*sqrt(c.Rstar*c.delta);
-
-    const scalar magXi = mag(xi);
-    const scalar fCap = c.props->mu*mag(fn);
-
-    if (kt*magXi > fCap)
-    {
-        // Sliding: the elastic part alone decides, as in the reference
-        if (magXi > 0)
-        {
-            const vector t(xi/magXi);
-            xi = (fCap/kt)*t;
-            return -fCap*t;
-        }
-        return Zero;
-    }
-
-    vector Ft(-kt*xi);
-
-    if (damping)
-    {
-        const scalar gammaT =
-            -2*sqrt(5.0/6.0)*c.props->beta*sqrt(kt*c.mstar);
-        Ft -= gammaT*c.vs;
-    }
-
-    return Ft;
-}
-
 
 // ************************************************************************* //
