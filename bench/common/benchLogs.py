@@ -50,7 +50,8 @@ def dpiFoamLog(path):
     out["engineRate"] = float(m.group(2))
     m = re.search(r"pair " + FLOAT + r" s \(" + FLOAT + r" %\), wall "
                   + FLOAT + r" s \(" + FLOAT + r" %\), neighbour " + FLOAT
-                  + r" s \(" + FLOAT + r" %, (\d+) builds\), integrate "
+                  + r" s \(" + FLOAT + r" %, (\d+) builds(?:, \d+ near builds, \d+ of \d+ listed pairs near)?\),"
+                  + r" integrate "
                   + FLOAT + r" s \(" + FLOAT + r" %\)", text)
     out["tPair"], out["tWall"], out["tNeighbour"], out["tIntegrate"] = (
         float(m.group(1)), float(m.group(3)), float(m.group(5)),
@@ -112,7 +113,8 @@ def apiHistory(path):
 
 def demDiagnostics(case):
     """Last row of postProcessing/dpiCloud/demDiagnostics/*/demDiagnostics.dat:
-    time KE rotKE nPairContacts nWallContacts maxOverlap/R* nParcels."""
+    time KE rotKE nPairContacts nWallContacts maxOverlap/R* nParcels (the
+    first row under "first")."""
     files = sorted(glob.glob(os.path.join(
         case, "postProcessing", "dpiCloud", "demDiagnostics", "*",
         "demDiagnostics.dat")))
@@ -128,6 +130,7 @@ def demDiagnostics(case):
     keys = ("time", "KE", "rotKE", "nPair", "nWall", "maxOverlap", "nParcels")
     out = dict(zip(keys, rows[-1]))
     out["KEfirst"] = rows[0][1]
+    out["first"] = dict(zip(keys, rows[0]))
     return out
 
 
@@ -158,3 +161,43 @@ def liggghtsLog(path):
     mm = re.search(r"Neighbor list builds = (\d+)", text)
     out["builds"] = int(mm.group(1)) if mm else -1
     return out
+
+
+def gnuTimes(case):
+    """GNU time of every process of a run (case/time.0, time.1, ...):
+    summed peak RSS [kB], mean CPU [s], number of processes."""
+    ts = [gnuTime(p)
+          for p in sorted(glob.glob(os.path.join(case, "time.[0-9]*")))]
+    if not ts:
+        return dict(rss=float("nan"), cpu=float("nan"), n=0)
+    return dict(rss=sum(t["maxRssKB"] for t in ts),
+                cpu=sum(t["cpuTime"] for t in ts)/len(ts), n=len(ts))
+
+
+def machineLoad(case):
+    """1-min load average in case/log.machine (bench/common/prepare's
+    benchMachine), NaN when missing."""
+    try:
+        with open(os.path.join(case, "log.machine")) as f:
+            return float(f.read().split("load average")[1].split()[0])
+    except (OSError, IndexError, ValueError):
+        return float("nan")
+
+
+def openfoamLog(path):
+    """An icoUncoupledKinematicParcelFoam log: parcels at the first and
+    last step, the rate (parcels x steps after the first / ExecutionTime
+    last - first: particle-steps per CPU second, the first step with its
+    injection excluded), the last linear kinetic energy."""
+    with open(path) as f:
+        text = f.read()
+    exe = [float(x) for x in re.findall(
+        r"^ExecutionTime = " + FLOAT + " s", text, re.M)]
+    n = [int(x) for x in re.findall(
+        r"Current number of parcels\s*=\s*(\d+)", text)]
+    ke = re.findall(r"Linear kinetic energy\s*=\s*" + FLOAT, text)
+    if len(exe) < 2 or not n:
+        raise RuntimeError("no time steps in " + path)
+    return dict(n=n[0], nEnd=n[-1], steps=len(exe),
+                rate=n[0]*(len(exe) - 1)/(exe[-1] - exe[0]),
+                KE=float(ke[-1]) if ke else float("nan"))

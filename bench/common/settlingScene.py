@@ -19,12 +19,19 @@ Writers:
                     no drag); the velocities go to <dir>/velocities.txt
                     and are set after a first step by openfoamSetU.py
 
+With --positions the particles come from an NPZ instead (x, box, optional
+v: e.g. the settled bed of bench/packedBed/bed.py, at rest) and the box
+may be a cuboid.
+
 Usage:
     settlingScene.py dpi <dir> --n 2000 --steps 4000 [--fluid-every 1000]
-    settlingScene.py liggghts <dir> --n 2000 --steps 4000
+    settlingScene.py liggghts <dir> --n 2000 --steps 4000 [--contacts]
     settlingScene.py openfoam <dir> --n 2000 --steps 4000 [--of-cell 2]
+                     [--of-write-end]
 Common options: --phi 0.15 --vrms 0.5 --seed 20240 --dt 1e-8
                 --order random|morton (list order, same particles)
+                --positions bed.npz (--n 1: its first particle alone)
+                --skin 7e-5 --max-impact-velocity 3
 """
 
 import argparse
@@ -44,25 +51,30 @@ FRICTION = 0.45
 GRAVITY = 9.81          # [m/s2], -z
 
 
-def generate(n, phi, vrms, seed):
-    """Positions, velocities and box edge L for n carriers.
+def boxOf(L):
+    """(Lx, Ly, Lz) of a box given by one edge (a cube) or three."""
+    return tuple(float(c) for c in np.broadcast_to(np.asarray(L, float), (3,)))
 
-    Random sequential addition on a cell grid: candidate centres uniform in
-    [r + gap, L - r - gap]^3, accepted when no accepted centre is closer
-    than d (1 + 1e-3). At phi <= 0.2 this needs ~1.3 candidates a particle.
-    """
-    d = DIAMETER
+
+def place(n, box, rng, d=None):
+    """n centres of spheres of diameter d (DIAMETER) at random without
+    overlaps in the box [0, Lx] x [0, Ly] x [0, Lz] (random sequential
+    addition on a cell grid): candidate centres uniform in
+    [r + gap, L - r - gap] per axis, accepted when no accepted centre is
+    closer than d (1 + 1e-3). At solids fractions <= 0.2 this needs ~1.3
+    candidates a particle (the jamming limit of the method is ~0.38)."""
+    d = DIAMETER if d is None else d
     r = 0.5*d
-    vp = math.pi/6*d**3
-    L = (n*vp/phi)**(1/3)
+    box = np.array(boxOf(box))
     gap = 0.01*d
-    lo, hi = r + gap, L - r - gap
+    lo, hi = r + gap, box - r - gap
+    if np.all(box == box[0]):
+        hi = hi[0]               # a cube: the same draws as always
     dmin2 = (d*(1 + 1e-3))**2
 
-    rng = np.random.default_rng(seed)
     h = d*(1 + 1e-3)                 # cell size: partners within 27 cells
-    nc = max(1, int(L/h))
-    h = L/nc
+    nc = np.maximum(1, (box/h).astype(int))
+    h = box/nc
     grid = {}
     x = np.empty((n, 3))
     k = 0
@@ -78,8 +90,8 @@ def generate(n, phi, vrms, seed):
         tries += 1
         if tries > 200*n:
             sys.exit("settlingScene: cannot place %d particles at phi %g"
-                     % (n, phi))
-        c = (int(p[0]/h), int(p[1]/h), int(p[2]/h))
+                     % (n, n*math.pi/6*d**3/np.prod(box)))
+        c = (int(p[0]/h[0]), int(p[1]/h[1]), int(p[2]/h[2]))
         ok = True
         for i in (c[0] - 1, c[0], c[0] + 1):
             for j in (c[1] - 1, c[1], c[1] + 1):
@@ -99,6 +111,19 @@ def generate(n, phi, vrms, seed):
             x[k] = p
             grid.setdefault(c, []).append(k)
             k += 1
+    return x
+
+
+def generate(n, phi, vrms, seed):
+    """Positions, velocities and box edge L for n carriers: placed at
+    random without overlaps in a cube at solids fraction phi (place()),
+    velocities Gaussian per component, rms speed vrms, capped at 2.5 vrms.
+    """
+    d = DIAMETER
+    vp = math.pi/6*d**3
+    L = (n*vp/phi)**(1/3)
+    rng = np.random.default_rng(seed)
+    x = place(n, L, rng, d)
 
     # Velocities: Gaussian components, rms speed vrms, capped at 2.5 vrms
     sigma = vrms/math.sqrt(3.0)
@@ -149,6 +174,46 @@ def check(x, L):
             if dd.size:
                 best = min(best, dd.min())
     return best - DIAMETER, wall
+
+
+def writeBlockMesh(case, L, cell, nMin, comment="", patch="walls",
+                   patchType="wall"):
+    """system/blockMeshDict of the box [0, Lx] x [0, Ly] x [0, Lz] (L: one
+    edge or three), all faces in one patch (default: the wall patch
+    `walls`), cells of about `cell` [m] (at least nMin per edge)."""
+    box = boxOf(L)
+    n = [max(nMin, int(round(e/cell))) for e in box]
+    with open(os.path.join(case, "system/blockMeshDict"), "w") as f:
+        f.write(header("dictionary", "blockMeshDict"))
+        f.write(comment)
+        if box[0] == box[1] == box[2]:
+            f.write("scale %.12g;\n" % box[0])
+            f.write("vertices\n(\n    (0 0 0) (1 0 0) (1 1 0) (0 1 0)\n"
+                    "    (0 0 1) (1 0 1) (1 1 1) (0 1 1)\n);\n")
+        else:
+            f.write("scale 1;\nvertices\n(\n")
+            for z in (0.0, box[2]):
+                f.write("   ")
+                for xy in ((0, 0), (1, 0), (1, 1), (0, 1)):
+                    f.write(" (%.12g %.12g %.12g)"
+                            % (xy[0]*box[0], xy[1]*box[1], z))
+                f.write("\n")
+            f.write(");\n")
+        f.write("blocks\n(\n    hex (0 1 2 3 4 5 6 7) (%d %d %d) "
+                "simpleGrading (1 1 1)\n);\n" % tuple(n))
+        f.write("boundary\n(\n    %s\n    {\n        type %s;\n"
+                "        faces\n        (\n"
+                "            (0 4 7 3) (2 6 5 1) (1 5 4 0)\n"
+                "            (0 3 2 1) (4 5 6 7) (3 7 6 2)\n"
+                "        );\n    }\n);\n" % (patch, patchType))
+
+
+def writeDecomposeParDict(case):
+    """system/decomposeParDict: 2 processors, split along x."""
+    with open(os.path.join(case, "system/decomposeParDict"), "w") as f:
+        f.write(header("dictionary", "decomposeParDict"))
+        f.write("numberOfSubdomains 2;\nmethod simple;\n"
+                "coeffs { n (2 1 1); }\n")
 
 
 def header(cls, obj):
@@ -206,21 +271,9 @@ def writeDpi(case, x, v, L, args):
     # Mesh: cells of about 5 carrier diameters (a fluid mesh of a real run
     # is of that order); the DEM does not use it, tracking does once per
     # fluid step
-    nCells = max(4, int(round(L/(5*DIAMETER))))
-    with open(os.path.join(case, "system/blockMeshDict"), "w") as f:
-        f.write(header("dictionary", "blockMeshDict"))
-        f.write("// settlingCarriers: cubic box of edge %.9g m, all walls\n"
-                % L)
-        f.write("scale %.12g;\n" % L)
-        f.write("vertices\n(\n    (0 0 0) (1 0 0) (1 1 0) (0 1 0)\n"
-                "    (0 0 1) (1 0 1) (1 1 1) (0 1 1)\n);\n")
-        f.write("blocks\n(\n    hex (0 1 2 3 4 5 6 7) (%d %d %d) "
-                "simpleGrading (1 1 1)\n);\n" % (nCells, nCells, nCells))
-        f.write("boundary\n(\n    walls\n    {\n        type wall;\n"
-                "        faces\n        (\n"
-                "            (0 4 7 3) (2 6 5 1) (1 5 4 0)\n"
-                "            (0 3 2 1) (4 5 6 7) (3 7 6 2)\n"
-                "        );\n    }\n);\n")
+    writeBlockMesh(case, L, 5*DIAMETER, 4,
+                   "// settlingCarriers: cubic box of edge %.9g m, all walls\n"
+                   % boxOf(L)[0])
 
     every = args.fluid_every
     nFluid = args.steps//every
@@ -249,10 +302,7 @@ def writeDpi(case, x, v, L, args):
     with open(os.path.join(case, "system/fvSolution"), "w") as f:
         f.write(header("dictionary", "fvSolution"))
         f.write("solvers {}\n")
-    with open(os.path.join(case, "system/decomposeParDict"), "w") as f:
-        f.write(header("dictionary", "decomposeParDict"))
-        f.write("numberOfSubdomains 2;\nmethod simple;\n"
-                "coeffs { n (2 1 1); }\n")
+    writeDecomposeParDict(case)
 
     with open(os.path.join(case, "constant/couplingProperties"), "w") as f:
         f.write(header("dictionary", "couplingProperties"))
@@ -263,9 +313,8 @@ def writeDpi(case, x, v, L, args):
                 "value           (0 0 %g);\n" % -GRAVITY)
 
     with open(os.path.join(case, "constant/carrierParticles"), "w") as f:
-        f.write("// %d carriers, seed %d, phi %g, vrms %g m/s, order %s "
-                "(bench/common/settlingScene.py)\n"
-                % (n, args.seed, args.phi, args.vrms, args.order))
+        f.write("// %d carriers, %s (bench/common/settlingScene.py)\n"
+                % (n, args.source))
         f.write("particles\n(\n")
         for p, u in zip(x, v):
             f.write("{ type carrier; position (%.10e %.10e %.10e); "
@@ -314,7 +363,7 @@ dem
     }
 
     // Verlet skin: the default (smallest diameter), stated for the peers
-    neighbourSearch { skin %(d)g; }
+    neighbourSearch { skin %(skin)g; }
 
     timeStepCheck { maxImpactVelocity %(vmax)g; }
 }
@@ -328,20 +377,18 @@ injectors
     }
 }
 """ % dict(preamble=dpiCloudPreamble(DENSITY), rho=DENSITY, dt=dt, d=DIAMETER, E=YOUNG, nu=POISSON,
-           e=RESTITUTION, mu=FRICTION, vmax=maxImpactVelocity(args.vrms)))
+           e=RESTITUTION, mu=FRICTION, skin=args.skin,
+           vmax=args.max_impact_velocity))
 
 
-def writeLiggghts(case, x, v, L, args):
-    """The same scene for stock LIGGGHTS 3.8: hertz/history pair and six
-    primitive plane walls of the same material, same skin, nve/sphere."""
-    os.makedirs(case, exist_ok=True)
-    n = len(x)
-    with open(os.path.join(case, "data.settling"), "w") as f:
-        f.write("settlingCarriers: %d carriers, seed %d, phi %g, vrms %g\n\n"
-                % (n, args.seed, args.phi, args.vrms))
-        f.write("%d atoms\n2 atom types\n\n" % n)
-        for a in "xyz":
-            f.write("0 %.12g %slo %shi\n" % (L, a, a))
+def writeLiggghtsData(path, x, v, L, title):
+    """A LIGGGHTS data file: the carriers (type 1; type 2 is the walls'
+    material) in the box [0, Lx] x [0, Ly] x [0, Lz], velocities v."""
+    with open(path, "w") as f:
+        f.write(title + "\n\n")
+        f.write("%d atoms\n2 atom types\n\n" % len(x))
+        for a, e in zip("xyz", boxOf(L)):
+            f.write("0 %.12g %slo %shi\n" % (e, a, a))
         f.write("\nAtoms\n\n")
         for i, p in enumerate(x):
             f.write("%d 1 %g %g %.10e %.10e %.10e\n"
@@ -350,14 +397,65 @@ def writeLiggghts(case, x, v, L, args):
         for i, u in enumerate(v):
             f.write("%d %.10e %.10e %.10e 0 0 0\n" % (i + 1, u[0], u[1], u[2]))
 
+
+def liggghtsWalls(L):
+    """Six primitive plane walls (type 2) on the faces of the box."""
     walls = ""
-    for a, name in (("x", "xplane"), ("y", "yplane"), ("z", "zplane")):
-        for side, pos in (("lo", 0.0), ("hi", L)):
+    for a, name, e in zip("xyz", ("xplane", "yplane", "zplane"), boxOf(L)):
+        for side, pos in (("lo", 0.0), ("hi", e)):
             walls += ("fix w%s%s all wall/gran model hertz tangential history"
                       " primitive type 2 %s %.12g\n" % (a, side, name, pos))
+    return walls
+
+
+def liggghtsMaterial(E, nu, e, mu):
+    """The LIGGGHTS material of both types (carriers and walls)."""
+    return ("fix m1 all property/global youngsModulus peratomtype %(E)g %(E)g\n"
+            "fix m2 all property/global poissonsRatio peratomtype %(nu)g %(nu)g\n"
+            "fix m3 all property/global coefficientRestitution peratomtypepair"
+            " 2 %(e)g %(e)g %(e)g %(e)g\n"
+            "fix m4 all property/global coefficientFriction peratomtypepair 2"
+            " %(mu)g %(mu)g %(mu)g %(mu)g\n" % dict(E=E, nu=nu, e=e, mu=mu))
+
+
+def writeLiggghts(case, x, v, L, args):
+    """The same scene for stock LIGGGHTS 3.8: hertz/history pair and six
+    primitive plane walls of the same material, same skin, nve/sphere."""
+    os.makedirs(case, exist_ok=True)
+    n = len(x)
+    # --contacts: the pair contacts summed over the atoms (each pair twice)
+    # in the thermo output, after the rotational energy
+    contacts = contactsThermo = ""
+    if args.contacts:
+        contacts = ("compute         cn all contact/atom\n"
+                    "compute         cnsum all reduce sum c_cn\n")
+        contactsThermo = " c_cnsum"
+    writeLiggghtsData(os.path.join(case, "data.settling"), x, v, L,
+                      "settlingCarriers: %d carriers, %s" % (n, args.source))
 
     with open(os.path.join(case, "in.settling"), "w") as f:
-        f.write("""# settlingCarriers in stock LIGGGHTS (bench/common/settlingScene.py)
+        f.write(liggghtsSetup(
+            "settlingCarriers in stock LIGGGHTS (bench/common/settlingScene.py)",
+            "data.settling", args.skin, YOUNG, RESTITUTION, FRICTION, args.dt,
+            GRAVITY, L))
+        f.write("""%(contacts)sthermo_style    custom step atoms ke c_rke%(contactsThermo)s
+thermo          %(every)d
+thermo_modify   lost ignore norm no
+
+# -var nsteps 0 on the command line: set-up only (the CPU baseline)
+variable        nsteps index %(steps)d
+run             ${nsteps}
+""" % dict(every=args.fluid_every, steps=args.steps, contacts=contacts,
+           contactsThermo=contactsThermo))
+
+
+def liggghtsSetup(title, data, skin, E, e, mu, dt, g, L):
+    """The start of a LIGGGHTS input: the carriers of the data file (type
+    1, walls type 2, one material of Young's modulus E, restitution e,
+    friction mu), hertz/history, six plane walls of the box L, gravity g
+    [m/s2] along -z, nve/sphere, neighbour skin, time step dt, and the
+    compute rke (rotational energy); thermo and run are the caller's."""
+    return """# %(title)s
 atom_style      granular
 atom_modify     map array
 boundary        f f f
@@ -366,16 +464,12 @@ communicate     single vel yes
 units           si
 processors      * * *
 
-read_data       data.settling
+read_data       %(data)s
 
 neighbor        %(skin)g bin
 neigh_modify    delay 0 every 1 check yes
 
-fix m1 all property/global youngsModulus peratomtype %(E)g %(E)g
-fix m2 all property/global poissonsRatio peratomtype %(nu)g %(nu)g
-fix m3 all property/global coefficientRestitution peratomtypepair 2 %(e)g %(e)g %(e)g %(e)g
-fix m4 all property/global coefficientFriction peratomtypepair 2 %(mu)g %(mu)g %(mu)g %(mu)g
-
+%(material)s
 pair_style      gran model hertz tangential history
 pair_coeff      * *
 
@@ -386,16 +480,9 @@ fix             grav all gravity %(g)g vector 0.0 0.0 -1.0
 fix             integr all nve/sphere
 
 compute         rke all erotate/sphere
-thermo_style    custom step atoms ke c_rke
-thermo          %(every)d
-thermo_modify   lost ignore norm no
-
-# -var nsteps 0 on the command line: set-up only (the CPU baseline)
-variable        nsteps index %(steps)d
-run             ${nsteps}
-""" % dict(skin=DIAMETER, E=YOUNG, nu=POISSON, e=RESTITUTION, mu=FRICTION,
-           dt=args.dt, g=GRAVITY, walls=walls, every=args.fluid_every,
-           steps=args.steps))
+""" % dict(title=title, data=data, skin=skin,
+           material=liggghtsMaterial(E, POISSON, e, mu), dt=dt, g=g,
+           walls=liggghtsWalls(L))
 
 
 def tsujiAlpha(e):
@@ -424,19 +511,7 @@ def writeOpenfoam(case, x, v, L, args):
     # OpenFOAM's pair search visits the particles of the neighbouring cells
     # within maxInteractionDistance: its cost grows with the particles per
     # cell, so its mesh is finer than dpiFoam's (--of-cell diameters)
-    nCells = max(2, int(round(L/(args.of_cell*DIAMETER))))
-    with open(os.path.join(case, "system/blockMeshDict"), "w") as f:
-        f.write(header("dictionary", "blockMeshDict"))
-        f.write("scale %.12g;\n" % L)
-        f.write("vertices\n(\n    (0 0 0) (1 0 0) (1 1 0) (0 1 0)\n"
-                "    (0 0 1) (1 0 1) (1 1 1) (0 1 1)\n);\n")
-        f.write("blocks\n(\n    hex (0 1 2 3 4 5 6 7) (%d %d %d) "
-                "simpleGrading (1 1 1)\n);\n" % (nCells, nCells, nCells))
-        f.write("boundary\n(\n    walls\n    {\n        type wall;\n"
-                "        faces\n        (\n"
-                "            (0 4 7 3) (2 6 5 1) (1 5 4 0)\n"
-                "            (0 3 2 1) (4 5 6 7) (3 7 6 2)\n"
-                "        );\n    }\n);\n")
+    writeBlockMesh(case, L, args.of_cell*DIAMETER, 2)
     # One first step (t = dt: injection), then the run proper from dt
     with open(os.path.join(case, "system/controlDict"), "w") as f:
         f.write(header("dictionary", "controlDict"))
@@ -445,8 +520,9 @@ def writeOpenfoam(case, x, v, L, args):
                 "stopAt          endTime;\n")
         f.write("endTime         %.12g;\n" % ((args.steps + 1)*dt))
         f.write("deltaT          %.12g;\n" % dt)
-        f.write("writeControl    timeStep;\nwriteInterval   1000000000;\n"
-                "purgeWrite      0;\nwriteFormat     ascii;\n"
+        f.write("writeControl    timeStep;\nwriteInterval   %d;\n"
+                % (args.steps + 1 if args.of_write_end else 1000000000))
+        f.write("purgeWrite      0;\nwriteFormat     ascii;\n"
                 "writePrecision  17;\nwriteCompression off;\n"
                 "timeFormat      general;\ntimePrecision   12;\n"
                 "runTimeModifiable false;\n")
@@ -459,10 +535,7 @@ def writeOpenfoam(case, x, v, L, args):
     with open(os.path.join(case, "system/fvSolution"), "w") as f:
         f.write(header("dictionary", "fvSolution"))
         f.write("solvers {}\n")
-    with open(os.path.join(case, "system/decomposeParDict"), "w") as f:
-        f.write(header("dictionary", "decomposeParDict"))
-        f.write("numberOfSubdomains 2;\nmethod simple;\n"
-                "coeffs { n (2 1 1); }\n")
+    writeDecomposeParDict(case)
     with open(os.path.join(case, "constant/g"), "w") as f:
         f.write(header("uniformDimensionedVectorField", "g"))
         f.write("dimensions      [0 1 -2 0 0 0 0];\n"
@@ -596,7 +669,22 @@ def main():
                     "random (as placed) or sorted along a Morton curve")
     ap.add_argument("--of-cell", type=float, default=2.0,
                     help="openfoam: mesh cell edge in diameters")
+    ap.add_argument("--of-write-end", action="store_true",
+                    help="openfoam: write the cloud at the last step")
+    ap.add_argument("--positions", metavar="NPZ",
+                    help="take the particles from NPZ (arrays x [m], box "
+                    "[m], optional v [m/s]; e.g. a settled bed of "
+                    "bench/packedBed/bed.py) instead of placing them; "
+                    "--phi, --vrms, --seed, --order then do not apply")
+    ap.add_argument("--skin", type=float, default=DIAMETER,
+                    help="Verlet skin [m] (dpiFoam, LIGGGHTS)")
+    ap.add_argument("--max-impact-velocity", type=float,
+                    help="dpiFoam timeStepCheck [m/s] (default from --vrms)")
+    ap.add_argument("--contacts", action="store_true",
+                    help="liggghts: pair contacts in the thermo output")
     args = ap.parse_args()
+    if args.max_impact_velocity is None:
+        args.max_impact_velocity = maxImpactVelocity(args.vrms)
 
     if args.steps % args.fluid_every:
         sys.exit("settlingScene: --steps must be a multiple of --fluid-every")
@@ -608,7 +696,18 @@ def main():
                  % (args.steps, args.steps//args.fluid_every,
                     args.fluid_every))
 
+    if args.positions:
+        x, v, L = loadPositions(args.positions, args.n)
+        args.source = "from %s" % os.path.basename(args.positions)
+        print("settlingScene: %d particles from %s, box %s mm"
+              % (len(x), args.positions,
+                 " x ".join("%.4g" % (e*1e3) for e in boxOf(L))))
+        write(args.kind, args.case, x, v, L, args)
+        return
+
     x, v, L = generate(args.n, args.phi, args.vrms, args.seed)
+    args.source = "seed %d, phi %g, vrms %g m/s, order %s" % (
+        args.seed, args.phi, args.vrms, args.order)
     if args.order == "morton":
         perm = mortonOrder(x, L)
         x, v = x[perm], v[perm]
@@ -620,12 +719,26 @@ def main():
           % (args.n, L*1e3, args.n*math.pi/6*DIAMETER**3/L**3,
              gapPair*1e6, gapWall*1e6, args.vrms))
 
-    if args.kind == "dpi":
-        writeDpi(args.case, x, v, L, args)
-    elif args.kind == "liggghts":
-        writeLiggghts(args.case, x, v, L, args)
-    else:
-        writeOpenfoam(args.case, x, v, L, args)
+    write(args.kind, args.case, x, v, L, args)
+
+
+def write(kind, case, x, v, L, args):
+    {"dpi": writeDpi, "liggghts": writeLiggghts,
+     "openfoam": writeOpenfoam}[kind](case, x, v, L, args)
+
+
+def loadPositions(path, n=None):
+    """x, v (zero if not stored) and box of an NPZ of particles; n, when
+    given, must match (or 1: the first particle only, an 'empty' case)."""
+    data = np.load(path)
+    x = np.array(data["x"], float)
+    v = np.array(data["v"], float) if "v" in data else np.zeros_like(x)
+    if n is not None and n != len(x):
+        if n != 1:
+            sys.exit("settlingScene: --n %d but %s has %d particles"
+                     % (n, path, len(x)))
+        x, v = x[:1], v[:1]
+    return x, v, np.array(data["box"], float)
 
 
 if __name__ == "__main__":

@@ -80,24 +80,29 @@ def main():
         for dp in coat(rng, nPer):
             parts.append(("API", xc + dp, vc))
 
-    case = a.case
+    writeCase(a.case, parts, L, a.steps, a.fluid_every, 1e-8,
+              "%d carriers, %d API parcels of N %d (%d primaries per "
+              "carrier), seed %d (bench/costVsN/powder.py)"
+              % (a.carriers, len(parts) - a.carriers, a.N, nPer*a.N, a.seed),
+              "costVsN powder (bench/costVsN/powder.py): %d carriers coated "
+              "with\n// %d API primaries each as %d parcels of N = %d"
+              % (a.carriers, nPer*a.N, nPer, a.N), a.N)
+    print("powder.py: %d carriers in a box of %.3g mm, %d API parcels of N %d"
+          % (a.carriers, L*1e3, len(parts) - a.carriers, a.N))
+
+
+def writeCase(case, parts, L, steps, every, dt, note, title, N):
+    """The dpiFoam DEM-only case of a carrier-API powder: parts (type,
+    position, velocity) in the box [0, L] (one edge or three) of six plane
+    walls (no wall cohesion), cohesion vdwGuParcel as Case 6, API parcels
+    of N primaries, DEM step dt, steps DEM steps, coupling every `every`;
+    `note` heads the particle list, `title` the cloud dictionary."""
     for sub in ("system", "constant"):
         os.makedirs(os.path.join(case, sub), exist_ok=True)
-    nCells = max(2, int(round(L/(5*DC))))
-    with open(os.path.join(case, "system/blockMeshDict"), "w") as f:
-        f.write(ss.header("dictionary", "blockMeshDict"))
-        f.write("scale %.12g;\n" % L)
-        f.write("vertices\n(\n    (0 0 0) (1 0 0) (1 1 0) (0 1 0)\n"
-                "    (0 0 1) (1 0 1) (1 1 1) (0 1 1)\n);\n")
-        f.write("blocks\n(\n    hex (0 1 2 3 4 5 6 7) (%d %d %d) "
-                "simpleGrading (1 1 1)\n);\n" % (nCells, nCells, nCells))
-        f.write("boundary\n(\n    box\n    {\n        type patch;\n"
-                "        faces\n        (\n"
-                "            (0 4 7 3) (2 6 5 1) (1 5 4 0)\n"
-                "            (0 3 2 1) (4 5 6 7) (3 7 6 2)\n"
-                "        );\n    }\n);\n")
-    nFluid = a.steps//a.fluid_every
-    dt = 1e-8
+    box = ss.boxOf(L)
+    ss.writeBlockMesh(case, L, 5*DC, 2, patch="box", patchType="patch")
+    ss.writeDecomposeParDict(case)
+    nFluid = steps//every
     with open(os.path.join(case, "system/controlDict"), "w") as f:
         f.write(ss.header("dictionary", "controlDict"))
         f.write("application dpiFoam;\nstartFrom startTime;\nstartTime 0;\n"
@@ -106,7 +111,7 @@ def main():
                 "purgeWrite 0;\nwriteFormat binary;\nwritePrecision 17;\n"
                 "writeCompression off;\ntimeFormat general;\n"
                 "timePrecision 10;\nrunTimeModifiable false;\n"
-                % (nFluid*a.fluid_every*dt, a.fluid_every*dt))
+                % (nFluid*every*dt, every*dt))
     with open(os.path.join(case, "system/fvSchemes"), "w") as f:
         f.write(ss.header("dictionary", "fvSchemes"))
         f.write("ddtSchemes { default Euler; }\ngradSchemes { default Gauss "
@@ -122,9 +127,7 @@ def main():
         f.write(ss.header("uniformDimensionedVectorField", "g"))
         f.write("dimensions [0 1 -2 0 0 0 0];\nvalue (0 0 -9.81);\n")
     with open(os.path.join(case, "constant/powderParticles"), "w") as f:
-        f.write("// %d carriers, %d API parcels of N %d (%d primaries per "
-                "carrier), seed %d (bench/costVsN/powder.py)\n"
-                % (a.carriers, len(parts) - a.carriers, a.N, nPer*a.N, a.seed))
+        f.write("// %s\n" % note)
         f.write("particles\n(\n")
         for t, p, u in parts:
             f.write("{ type %s; position (%.12e %.12e %.12e); "
@@ -133,19 +136,19 @@ def main():
         f.write(");\n")
 
     walls = ""
-    for name, pt, nv in (("xlo", "0 0 0", "1 0 0"), ("xhi", "L 0 0", "-1 0 0"),
-                         ("ylo", "0 0 0", "0 1 0"), ("yhi", "0 L 0", "0 -1 0"),
-                         ("zlo", "0 0 0", "0 0 1"), ("zhi", "0 0 L", "0 0 -1")):
+    for name, pt, nv in (("xlo", "0 0 0", "1 0 0"), ("xhi", "X 0 0", "-1 0 0"),
+                         ("ylo", "0 0 0", "0 1 0"), ("yhi", "0 Y 0", "0 -1 0"),
+                         ("zlo", "0 0 0", "0 0 1"), ("zhi", "0 0 Z", "0 0 -1")):
+        for c, e in zip("XYZ", box):
+            pt = pt.replace(c, "%.12g" % e)
         walls += ("        %s { type plane; point (%s); normal (%s); "
-                  "material carrier; }\n"
-                  % (name, pt.replace("L", "%.12g" % L), nv))
+                  "material carrier; }\n" % (name, pt, nv))
     with open(os.path.join(case, "constant/dpiCloudProperties"), "w") as f:
         f.write(ss.header("dictionary", "dpiCloudProperties"))
-        f.write("""// costVsN powder (bench/costVsN/powder.py): %(nc)d carriers coated with
-// %(P)d API primaries each as %(nPer)d parcels of N = %(N)d
+        f.write("""// %(title)s
 %(preamble)sdem
 {
-    timeStep 1e-8;
+    timeStep %(dt)g;
     types
     {
         carrier { diameter %(dc)g; density %(rho)g; youngsModulus %(Y)g; poissonsRatio %(nu)g; N 1; }
@@ -174,10 +177,8 @@ def main():
 }
 injectors { powder { type singleParticles; #include "powderParticles" } }
 agglomerates { linkGap 0; }
-""" % dict(nc=a.carriers, P=nPer*a.N, nPer=nPer, N=a.N, preamble=ss.dpiCloudPreamble(RHO), rho=RHO, dc=DC,
-           da=DA, Y=Y, nu=NU, walls=walls))
-    print("powder.py: %d carriers in a box of %.3g mm, %d API parcels of N %d"
-          % (a.carriers, L*1e3, len(parts) - a.carriers, a.N))
+""" % dict(title=title, dt=dt, N=N, preamble=ss.dpiCloudPreamble(RHO),
+           rho=RHO, dc=DC, da=DA, Y=Y, nu=NU, walls=walls))
 
 
 if __name__ == "__main__":

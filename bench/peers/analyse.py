@@ -33,6 +33,7 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "common"))
 import benchLogs  # noqa: E402
+import peersPlot  # noqa: E402
 
 COLUMNS = [
     "N", "np", "steps", "dpi_psps", "lig_psps", "of_psps",
@@ -45,22 +46,8 @@ COLUMNS = [
 NAN = float("nan")
 
 
-def load(case):
-    try:
-        with open(os.path.join(case, "log.machine")) as f:
-            return float(f.read().split("load average")[1].split()[0])
-    except (OSError, IndexError, ValueError):
-        return NAN
-
-
-def times(case):
-    """GNU time of every process: summed peak RSS [kB], mean CPU [s]."""
-    ts = [benchLogs.gnuTime(p)
-          for p in sorted(glob.glob(os.path.join(case, "time.[0-9]*")))]
-    if not ts:
-        return dict(rss=NAN, cpu=NAN, n=0)
-    return dict(rss=sum(t["maxRssKB"] for t in ts),
-                cpu=sum(t["cpuTime"] for t in ts)/len(ts), n=len(ts))
+load = benchLogs.machineLoad
+times = benchLogs.gnuTimes
 
 
 def dpiRun(d):
@@ -83,18 +70,9 @@ def ligRun(d, setup):
 
 
 def ofRun(d):
-    with open(os.path.join(d, "log.openfoam")) as f:
-        text = f.read()
-    exe = [float(x) for x in re.findall(
-        r"^ExecutionTime = " + benchLogs.FLOAT + " s", text, re.M)]
-    n = [int(x) for x in re.findall(
-        r"Current number of parcels\s*=\s*(\d+)", text)]
-    ke = re.findall(r"Linear kinetic energy\s*=\s*" + benchLogs.FLOAT, text)
-    if len(exe) < 2 or not n:
-        raise RuntimeError("no time steps in " + d)
-    return dict(case=d, n=n[0], nEnd=n[-1],
-                rate=n[0]*(len(exe) - 1)/(exe[-1] - exe[0]),
-                KE=float(ke[-1]) if ke else NAN, tm=times(d))
+    log = benchLogs.openfoamLog(os.path.join(d, "log.openfoam"))
+    return dict(case=d, n=log["n"], nEnd=log["nEnd"], rate=log["rate"],
+                KE=log["KE"], tm=times(d))
 
 
 def rows(base):
@@ -146,31 +124,8 @@ def f(r, k):
 
 
 def plot(rows, png):
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    import numpy as np
-
-    x = np.arange(len(rows))
-    w = 0.27
-    fig, ax = plt.subplots(figsize=(8, 4.8))
-    series = (("dpi_psps", "dpiFoam", "C0"), ("lig_psps", "LIGGGHTS 3.8", "C3"),
-              ("of_psps", "OpenFOAM colliding cloud", "C2"))
-    for k, (key, lab, col) in enumerate(series):
-        ax.bar(x + (k - 1)*w, [f(r, key)/1e6 for r in rows], w, label=lab,
-               color=col)
-    ax.set_xticks(x)
-    ax.set_xticklabels(["%s particles, np %s\n/LIG %.2f, /OF %.1f"
-                        % (r["N"], r["np"], f(r, "ratio_lig"),
-                           f(r, "ratio_of")) for r in rows], fontsize=7)
-    ax.set_yscale("log")
-    ax.set_ylabel("million particle-steps/s (solver loop, CPU per process)")
-    ax.set_title("Settling 70 um carriers, Hertz, dt 1e-8 s: "
-                 "ratios dpiFoam/LIGGGHTS, dpiFoam/OpenFOAM", fontsize=9)
-    ax.legend(fontsize=8)
-    ax.grid(True, axis="y", alpha=0.3, which="both")
-    fig.tight_layout()
-    fig.savefig(png, dpi=120)
+    peersPlot.bars(rows, png, "Settling 70 um carriers, Hertz, dt 1e-8 s: "
+                   "ratios dpiFoam/LIGGGHTS, dpiFoam/OpenFOAM")
 
 
 def markdown(rows, md):

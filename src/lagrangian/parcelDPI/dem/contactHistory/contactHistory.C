@@ -8,6 +8,7 @@ License
 
 #include "contactHistory.H"
 #include "error.H"
+#include "Map.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -85,6 +86,141 @@ void Foam::contactHistory::setHistory
     forAll(xi, i)
     {
         set(globalId, partnerKeys[i], xi[i]);
+    }
+}
+
+
+void Foam::contactHistory::load
+(
+    const labelUList& ids,
+    const labelUList& pairRow,
+    const labelUList& pairStart,
+    const labelUList& pairJ
+)
+{
+    const label np = pairJ.size();
+    pairXi_.setSize(np);
+    pairHasXi_.setSize(np);
+    forAll(pairRow, a)
+    {
+        const label idi = ids[pairRow[a]];
+        for (label k = pairStart[a]; k < pairStart[a + 1]; ++k)
+        {
+            pairXi_[k] = find(idi, ids[pairJ[k]]);
+            pairHasXi_[k] = (pairXi_[k] != vector::zero);
+        }
+    }
+
+    Map<label> oldRow;
+    List<DynamicList<wallContact>> oldState;
+    if (wallState_.size() == workingIds_.size())
+    {
+        oldRow.resize(2*workingIds_.size());
+        forAll(workingIds_, q)
+        {
+            oldRow.insert(workingIds_[q], q);
+        }
+        oldState.transfer(wallState_);
+    }
+
+    const label n = ids.size();
+    wallState_.setSize(n);
+    DynamicList<label> keys;
+    DynamicList<vector> xis;
+    for (label p = 0; p < n; ++p)
+    {
+        wallState_[p].clear();
+
+        const auto iter = oldRow.cfind(ids[p]);
+        if (iter.found() && iter.val() < oldState.size())
+        {
+            wallState_[p] = oldState[iter.val()];
+            continue;
+        }
+
+        keys.clear();
+        xis.clear();
+        history(ids[p], keys, xis);
+        forAll(keys, c)
+        {
+            if (keys[c] < 0)
+            {
+                const label code = -1 - keys[c];
+                wallContact w;
+                w.wall = code % maxWalls;
+                w.key = code/maxWalls;
+                w.n = Zero;     // unknown until the next evaluation
+                w.xi = xis[c];
+                wallState_[p].append(w);
+            }
+        }
+    }
+
+    workingIds_ = ids;
+    workingValid_ = true;
+}
+
+
+void Foam::contactHistory::toNear(const labelUList& nearK)
+{
+    nearXi_.setSize(nearK.size());
+    nearHasXi_.setSize(nearK.size());
+    forAll(nearK, m)
+    {
+        nearXi_[m] = pairXi_[nearK[m]];
+        nearHasXi_[m] = pairHasXi_[nearK[m]];
+    }
+}
+
+
+void Foam::contactHistory::syncPairs(const labelUList& nearK)
+{
+    if (nearK.size() != nearXi_.size())
+    {
+        return;
+    }
+    pairXi_ = Zero;
+    pairHasXi_ = false;
+    forAll(nearK, m)
+    {
+        pairXi_[nearK[m]] = nearXi_[m];
+        pairHasXi_[nearK[m]] = nearHasXi_[m];
+    }
+}
+
+
+void Foam::contactHistory::flush
+(
+    const labelUList& pairRow,
+    const labelUList& pairStart,
+    const labelUList& pairJ
+)
+{
+    if (!workingValid_)
+    {
+        return;
+    }
+
+    store_.clear();
+
+    forAll(pairRow, a)
+    {
+        const label idi = workingIds_[pairRow[a]];
+        for (label k = pairStart[a]; k < pairStart[a + 1]; ++k)
+        {
+            if (pairHasXi_[k] && pairXi_[k] != vector::zero)
+            {
+                set(idi, workingIds_[pairJ[k]], pairXi_[k]);
+            }
+        }
+    }
+
+    forAll(wallState_, p)
+    {
+        for (const wallContact& w : wallState_[p])
+        {
+            set(workingIds_[p], wallPartnerKey(w.wall, w.key), w.xi);
+        }
     }
 }
 

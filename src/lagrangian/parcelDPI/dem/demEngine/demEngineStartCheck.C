@@ -143,7 +143,7 @@ void Foam::demEngine::checkStartState(const demState& s, const word& when)
                 }
                 const scalar Rstar = s.r[i]*s.r[j]/rSum;
                 const scalar ratio = (rSum - dist)/Rstar;
-                if (ratio > startOverlapWarn_)
+                if (ratio > overlap_.startWarn())
                 {
                     ++worst.count;
                 }
@@ -163,19 +163,19 @@ void Foam::demEngine::checkStartState(const demState& s, const word& when)
     // a centre on the wall gives 1
     if (walls_.size())
     {
-        prepareWalls(rMax);
+        walls_.prepare(rMax);
     }
     DynamicList<demWallContact> contacts;
     for (label p = 0; p < nOwned; ++p)
     {
-        forAll(walls_, w)
+        forAll(walls_.walls(), w)
         {
             contacts.clear();
-            walls_[w].findContacts(s.x[p], s.r[p], contacts);
+            walls_.walls()[w].findContacts(s.x[p], s.r[p], contacts);
             for (const demWallContact& c : contacts)
             {
                 const scalar ratio = (s.r[p] - c.distance)/s.r[p];
-                if (ratio > startOverlapWarn_)
+                if (ratio > overlap_.startWarn())
                 {
                     ++worst.count;
                 }
@@ -207,7 +207,7 @@ void Foam::demEngine::checkStartState(const demState& s, const word& when)
         }
     }
 
-    if (worst.ratio <= startOverlapWarn_)
+    if (worst.ratio <= overlap_.startWarn())
     {
         return;
     }
@@ -217,14 +217,14 @@ void Foam::demEngine::checkStartState(const demState& s, const word& when)
         worst.wall < 0
       ? "parcels " + Foam::name(worst.idA) + " and " + Foam::name(worst.idB)
       : "parcel " + Foam::name(worst.idA) + " and wall "
-      + walls_[worst.wall].name()
+      + walls_.walls()[worst.wall].name()
     );
 
-    if (worst.ratio > startOverlapRefuse_)
+    if (worst.ratio > overlap_.startRefuse())
     {
         FatalErrorInFunction
             << "The parcels " << when << " overlap: " << nOver
-            << " contacts above " << startOverlapWarn_ << " R*, the largest "
+            << " contacts above " << overlap_.startWarn() << " R*, the largest "
             << threeDigits(worst.ratio).c_str() << " R* (" << what.c_str()
             << ")"
             << (
@@ -240,16 +240,16 @@ void Foam::demEngine::checkStartState(const demState& s, const word& when)
             << " region away from the walls), or, for a packed start that"
             << " is meant to relax, raise dem/startOverlap/refuse above "
             << threeDigits(worst.ratio).c_str() << " (default 0.1; warn "
-            << startOverlapWarn_ << ")"
+            << overlap_.startWarn() << ")"
             << exit(FatalError);
     }
 
     WarningInFunction
         << "The parcels " << when << " overlap: " << nOver << " contacts"
-        << " above " << startOverlapWarn_ << " R*, the largest "
+        << " above " << overlap_.startWarn() << " R*, the largest "
         << threeDigits(worst.ratio).c_str() << " R* (" << what.c_str()
         << "); accepted up to"
-        << " dem/startOverlap/refuse " << startOverlapRefuse_ << endl;
+        << " dem/startOverlap/refuse " << overlap_.startRefuse() << endl;
 }
 
 

@@ -1,0 +1,342 @@
+#!/usr/bin/python3
+"""Collect bench/packedBed runs into results.csv, results.md, throughput.png.
+
+Usage: analyse.py --csv results.csv --png throughput.png --md results.md \\
+           cases/N2000 cases/N10000 ... [cases/cohesive-N2000]
+
+One row per bed size N and process count np (code "bed"), per code the
+best of the repeated runs (highest loop rate); the cohesive variant's rows
+have code "cohesive" (dpiFoam only). Columns:
+
+  dpi_psps, lig_psps, of_psps   particle-steps per CPU second of the solver
+                loop (per process: on 2 processes the rate of the whole run),
+                set-up excluded: dpiFoam N x DEM steps after the first fluid
+                step / (ExecutionTime last - first); LIGGGHTS N x steps /
+                (CPU of the run - CPU of a 0-step run, per process);
+                OpenFOAM N x (steps - 1) / (ExecutionTime last - first)
+  ratio_lig, ratio_of   dpi_psps / lig_psps, dpi_psps / of_psps
+  *_speedup     rate on this np / rate on 1 process (same N)
+  dpi_engine_psps   dpiFoam's 'DEM performance' (DEM engine, wall clock)
+  dpi_pair_share    pair term / DEM engine time (dpiFoam's breakdown)
+  lig_pair_share    LIGGGHTS' Pair time / loop time
+  z_start       pair contacts per particle (2 x overlapping pairs / N) of
+                the start positions (the bed's, geometric; all codes)
+  dpi_z_first, dpi_z_end   dpiFoam's demDiagnostics after the first fluid
+                step and at the end; lig_z_start, lig_z_end LIGGGHTS'
+                contact/atom sum / N at step 0 and at the end; of_z_end
+                geometric from OpenFOAM's written positions at the end
+  *_KE          translational kinetic energy at the end [J]
+  *_rss_MB, *_empty_rss_MB   peak RSS (GNU time) summed over the processes,
+                of the run and of the empty case (the bed's first carrier
+                alone in the same box and mesh)
+  *_kB_per_particle   (rss - empty rss) / N
+  dpi_setup_s   dpiFoam's set-up before the loop: ExecutionTime of the
+                first fluid step minus one loop step's (CPU)
+  dpi_inject_s  dpi_setup_s - the empty case's: the cost of N particles in
+                the singleParticles injector (reading, locating, injecting)
+  *_runs        every run's rate
+  load_before   1-min load average before the best dpiFoam run
+  parcels, api_attached, api_detached   cohesive rows: DEM parcels, API
+                primaries attached to carriers / detached at the end
+"""
+
+import argparse
+import csv
+import glob
+import json
+import os
+import re
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "common"))
+import benchLogs  # noqa: E402
+import peersPlot  # noqa: E402
+import settlingScene as ss  # noqa: E402
+
+COLUMNS = [
+    "code", "N", "np", "steps", "of_steps", "dpi_psps", "lig_psps",
+    "of_psps", "ratio_lig", "ratio_of", "dpi_speedup", "lig_speedup",
+    "of_speedup", "dpi_engine_psps", "dpi_pair_share", "lig_pair_share",
+    "z_start", "dpi_z_first", "dpi_z_end", "lig_z_start", "lig_z_end",
+    "of_z_end", "dpi_KE", "lig_KE", "of_KE", "of_parcels_end",
+    "dpi_rss_MB", "lig_rss_MB", "of_rss_MB", "dpi_empty_rss_MB",
+    "lig_empty_rss_MB", "of_empty_rss_MB", "dpi_kB_per_particle",
+    "lig_kB_per_particle", "of_kB_per_particle", "dpi_setup_s",
+    "dpi_inject_s", "parcels", "api_attached", "api_detached",
+    "dpi_runs", "lig_runs", "of_runs", "load_before",
+]
+NAN = float("nan")
+
+
+def geometricContacts(x):
+    """2 x overlapping pairs / particles of positions x."""
+    from scipy.spatial import cKDTree
+    pairs = cKDTree(x).query_pairs(ss.DIAMETER, output_type="ndarray")
+    return 2.0*len(pairs)/len(x)
+
+
+def dpiRun(d):
+    path = os.path.join(d, "log.dpiFoam")
+    log = benchLogs.dpiFoamLog(path)
+    dg = benchLogs.demDiagnostics(d)
+    n = int(dg["nParcels"])
+    every = log["steps"]//log["nFluid"] if log["nFluid"] else 0
+    loopSteps = (log["nFluid"] - 1)*every
+    text = open(path).read()
+    exe = [float(x) for x in re.findall(
+        r"^ExecutionTime = " + benchLogs.FLOAT + " s", text, re.M)]
+    api = re.findall(r"API primaries: attached to carriers (\d+), "
+                     r"detached (\d+)", text)
+    return dict(case=d, n=n, steps=log["steps"],
+                rate=n*loopSteps/log["loopCpu"]
+                if loopSteps and log["loopCpu"] > 0 else NAN,
+                engine=log["engineRate"],
+                pairShare=log["tPair"]/log["tEngine"],
+                setup=exe[0] - log["loopCpu"]/(log["nFluid"] - 1)
+                if log["nFluid"] > 1 else NAN,
+                zFirst=2*dg["first"]["nPair"]/n, zEnd=2*dg["nPair"]/n,
+                KE=dg["KE"], tm=benchLogs.gnuTimes(d),
+                api=[int(x) for x in api[-1]] if api else [NAN, NAN])
+
+
+def ligRun(d, setup):
+    log = benchLogs.liggghtsLog(os.path.join(d, "log.liggghts"))
+    tm = benchLogs.gnuTimes(d)
+    ps = log["atoms"]*log["steps"]
+    # thermo rows: step atoms ke rke contacts
+    text = open(os.path.join(d, "log.liggghts")).read()
+    rows = [ln.split() for ln in text.splitlines()
+            if len(ln.split()) == 5 and ln.split()[0].isdigit()]
+    n = log["atoms"]
+    return dict(case=d, n=n,
+                rate=ps/(tm["cpu"] - setup["cpu"]) if setup else NAN,
+                KE=log.get("KE", NAN),
+                pairShare=log.get("tPair", NAN)/log["loop"],
+                zStart=float(rows[0][4])/n if rows else NAN,
+                zEnd=float(rows[-1][4])/n if rows else NAN, tm=tm)
+
+
+def ofPositions(d):
+    """Positions of OpenFOAM's cloud at the latest written time (serial or
+    decomposed)."""
+    roots = sorted(glob.glob(os.path.join(d, "processor[0-9]*"))) or [d]
+    x = []
+    for r in roots:
+        times = [t for t in os.listdir(r) if re.match(r"^[0-9.eE+-]+$", t)
+                 and float(t) > 0]
+        if not times:
+            continue
+        t = max(times, key=float)
+        f = os.path.join(r, t, "lagrangian", "kinematicCloud", "positions")
+        if os.path.isfile(f):
+            x += re.findall(r"^\(([^()]+)\) \d+", open(f).read(), re.M)
+    return np.array([[float(c) for c in s.split()] for s in x])
+
+
+def ofRun(d):
+    log = benchLogs.openfoamLog(os.path.join(d, "log.openfoam"))
+    x = ofPositions(d)
+    return dict(case=d, n=log["n"], nEnd=log["nEnd"], steps=log["steps"],
+                rate=log["rate"], KE=log["KE"],
+                zEnd=geometricContacts(x) if len(x) > 1 else NAN,
+                tm=benchLogs.gnuTimes(d))
+
+
+def best(runs):
+    return max(runs, key=lambda r: r["rate"]) if runs else None
+
+
+def rows(base):
+    out = []
+    cohesive = os.path.basename(base.rstrip("/")).startswith("cohesive")
+    nps = sorted({int(m.group(1)) for p in glob.glob(os.path.join(base, "*-np*-r*"))
+                  for m in [re.search(r"-np(\d+)-r", p)] if m})
+    zStart = NAN
+    bedN = re.search(r"N(\d+)$", base.rstrip("/"))
+    bedFile = os.path.join(os.path.dirname(base.rstrip("/")),
+                           "bed-N%s.npz" % bedN.group(1)) if bedN else ""
+    if os.path.isfile(bedFile) and not cohesive:
+        zStart = json.loads(str(np.load(bedFile)["stats"]))["z_geometric"]
+    for np_ in nps:
+        runs = {}
+        runs["dpi"] = [dpiRun(d) for d in sorted(glob.glob(
+            os.path.join(base, "dpiFoam-np%d-r*" % np_)))]
+        setupDir = os.path.join(base, "liggghts-setup-np%d" % np_)
+        setup = benchLogs.gnuTimes(setupDir) if os.path.isdir(setupDir) \
+            else None
+        runs["lig"] = [ligRun(d, setup) for d in sorted(glob.glob(
+            os.path.join(base, "liggghts-np%d-r*" % np_)))]
+        runs["of"] = [ofRun(d) for d in sorted(glob.glob(
+            os.path.join(base, "openfoam-np%d-r*" % np_)))]
+        b = {k: best(v) for k, v in runs.items()}
+        anyRun = next(r for r in b.values() if r)
+        r = {"code": "cohesive" if cohesive else "bed", "N": anyRun["n"],
+             "np": np_, "z_start": zStart,
+             "steps": b["dpi"]["steps"] if b["dpi"] else "",
+             "of_steps": b["of"]["steps"] - 1 if b["of"] else ""}
+        for k in ("dpi", "lig", "of"):
+            x = b[k]
+            r[k + "_psps"] = x["rate"] if x else NAN
+            r[k + "_KE"] = x["KE"] if x else NAN
+            r[k + "_rss_MB"] = x["tm"]["rss"]/1024 if x else NAN
+            r[k + "_runs"] = " ".join("%.4g" % y["rate"] for y in runs[k])
+            empty = os.path.join(base, {"dpi": "dpiFoam", "lig": "liggghts",
+                                        "of": "openfoam"}[k]
+                                 + "-empty-np%d" % np_)
+            e = benchLogs.gnuTimes(empty) if os.path.isdir(empty) else None
+            r[k + "_empty_rss_MB"] = e["rss"]/1024 if e else NAN
+            r[k + "_kB_per_particle"] = (x["tm"]["rss"] - e["rss"])/x["n"] \
+                if x and e else NAN
+        d = b["dpi"]
+        if d:
+            r.update(dpi_engine_psps=d["engine"], dpi_pair_share=d["pairShare"],
+                     dpi_z_first=d["zFirst"], dpi_z_end=d["zEnd"],
+                     dpi_setup_s=d["setup"], parcels=d["n"],
+                     load_before=benchLogs.machineLoad(d["case"]))
+            if cohesive:
+                r.update(api_attached=d["api"][0], api_detached=d["api"][1])
+            empty = os.path.join(base, "dpiFoam-empty-np%d" % np_)
+            if os.path.isdir(empty):
+                r["dpi_inject_s"] = d["setup"] - dpiRun(empty)["setup"]
+        if b["lig"]:
+            r.update(lig_pair_share=b["lig"]["pairShare"],
+                     lig_z_start=b["lig"]["zStart"],
+                     lig_z_end=b["lig"]["zEnd"])
+        if b["of"]:
+            r.update(of_z_end=b["of"]["zEnd"], of_parcels_end=b["of"]["nEnd"])
+        r["ratio_lig"] = r["dpi_psps"]/r["lig_psps"]
+        r["ratio_of"] = r["dpi_psps"]/r["of_psps"]
+        out.append(r)
+    one = next((r for r in out if r["np"] == 1), None)
+    for r in out:
+        for k in ("dpi", "lig", "of"):
+            r[k + "_speedup"] = r[k + "_psps"]/one[k + "_psps"] if one \
+                else NAN
+    return out
+
+
+def fmt(v):
+    return "%.6g" % v if isinstance(v, float) else str(v)
+
+
+f = peersPlot.num
+
+
+def plot(table, png):
+    peersPlot.bars([r for r in table if r["code"] == "bed"], png,
+                   "Packed bed of 70 um carriers (3-4.5 contacts per particle),"
+                   " Hertz + history, dt 5e-8 s", "carriers")
+
+
+def g(v, form):
+    return "-" if v != v else form % v
+
+
+def markdown(table, md):
+    bed = [r for r in table if r["code"] == "bed"]
+    coh = [r for r in table if r["code"] == "cohesive"]
+    with open(md, "w") as fh:
+        fh.write("| carriers | np | dpiFoam | LIGGGHTS | OpenFOAM | "
+                 "dpiFoam/LIGGGHTS | dpiFoam/OpenFOAM | 2-process speed-up "
+                 "dpiFoam / LIGGGHTS / OpenFOAM | dpiFoam pair share |\n")
+        fh.write("|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n")
+        for r in bed:
+            sp = " / ".join(g(f(r, k + "_speedup"), "%.2f")
+                            for k in ("dpi", "lig", "of")) \
+                if int(r["np"]) > 1 else ""
+            fh.write("| %s | %s | %s | %s | %s | **%s** | **%s** | %s | %s |\n"
+                     % (r["N"], r["np"], g(f(r, "dpi_psps"), "%.3g"),
+                        g(f(r, "lig_psps"), "%.3g"), g(f(r, "of_psps"), "%.3g"),
+                        g(f(r, "ratio_lig"), "%.2f"),
+                        g(f(r, "ratio_of"), "%.1f"), sp,
+                        g(100*f(r, "dpi_pair_share"), "%.0f %%")))
+        fh.write("\n(particle-steps per CPU second of the solver loop, per "
+                 "process: on 2 processes the rate of the whole run; best "
+                 "of the runs in results.csv)\n\n")
+        fh.write("| carriers | np | contacts/particle at the start "
+                 "(geometric) | dpiFoam after 1st fluid step -> end | "
+                 "LIGGGHTS start -> end | OpenFOAM end | KE at the end "
+                 "dpiFoam / LIGGGHTS / OpenFOAM [J] |\n")
+        fh.write("|---:|---:|---:|---:|---:|---:|---:|\n")
+        for r in bed:
+            fh.write("| %s | %s | %s | %s -> %s | %s -> %s | %s | %s / %s / "
+                     "%s |\n"
+                     % (r["N"], r["np"], g(f(r, "z_start"), "%.2f"),
+                        g(f(r, "dpi_z_first"), "%.2f"),
+                        g(f(r, "dpi_z_end"), "%.2f"),
+                        g(f(r, "lig_z_start"), "%.2f"),
+                        g(f(r, "lig_z_end"), "%.2f"),
+                        g(f(r, "of_z_end"), "%.2f"),
+                        g(f(r, "dpi_KE"), "%.4g"), g(f(r, "lig_KE"), "%.4g"),
+                        g(f(r, "of_KE"), "%.4g")))
+        fh.write("\n| carriers | np | peak RSS dpiFoam / LIGGGHTS / OpenFOAM "
+                 "[MB] | empty case [MB] | kB per particle above the empty "
+                 "case | dpiFoam set-up [s CPU] | of which injection |\n")
+        fh.write("|---:|---:|---:|---:|---:|---:|---:|\n")
+        for r in bed:
+            fh.write("| %s | %s | %s / %s / %s | %s / %s / %s | "
+                     "%s / %s / %s | %s | %s |\n"
+                     % ((r["N"], r["np"])
+                        + tuple(g(f(r, k + "_rss_MB"), "%.0f")
+                                for k in ("dpi", "lig", "of"))
+                        + tuple(g(f(r, k + "_empty_rss_MB"), "%.0f")
+                                for k in ("dpi", "lig", "of"))
+                        + tuple(g(f(r, k + "_kB_per_particle"), "%.2f")
+                                for k in ("dpi", "lig", "of"))
+                        + (g(f(r, "dpi_setup_s"), "%.2f"),
+                           g(f(r, "dpi_inject_s"), "%.2f"))))
+        if coh:
+            fh.write("\nCohesive variant (dpiFoam only):\n\n"
+                     "| parcels | np | parcel-steps/s | 2-process speed-up | "
+                     "pair share | contacts per parcel after 1st fluid step "
+                     "-> end | API attached / detached at the end | peak "
+                     "RSS [MB] |\n|---:|---:|---:|---:|---:|---:|---:|---:|\n")
+            for r in coh:
+                fh.write("| %s | %s | %s | %s | %s | %s -> %s | %s / %s | %s |\n"
+                         % (r["parcels"], r["np"], g(f(r, "dpi_psps"), "%.3g"),
+                            g(f(r, "dpi_speedup"), "%.2f")
+                            if int(r["np"]) > 1 else "",
+                            g(100*f(r, "dpi_pair_share"), "%.0f %%"),
+                            g(f(r, "dpi_z_first"), "%.2f"),
+                            g(f(r, "dpi_z_end"), "%.2f"),
+                            r.get("api_attached", "-"),
+                            r.get("api_detached", "-"),
+                            g(f(r, "dpi_rss_MB"), "%.0f")))
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--csv", required=True)
+    ap.add_argument("--png", required=True)
+    ap.add_argument("--md", required=True)
+    ap.add_argument("cases", nargs="*")
+    args = ap.parse_args()
+
+    # Rows of earlier runs (other sizes) are kept; re-measured ones replaced
+    table = {}
+    if os.path.isfile(args.csv):
+        with open(args.csv) as fh:
+            for r in csv.DictReader(fh):
+                table[(r["code"], int(r["N"]), int(r["np"]))] = r
+    for base in args.cases:
+        for r in rows(base):
+            table[(r["code"], int(r["N"]), int(r["np"]))] = {
+                k: fmt(v) for k, v in r.items()}
+    ordered = [table[k] for k in sorted(table)]
+
+    with open(args.csv, "w", newline="") as fh:
+        w = csv.DictWriter(fh, fieldnames=COLUMNS)
+        w.writeheader()
+        for r in ordered:
+            w.writerow({k: r.get(k, "") for k in COLUMNS})
+    markdown(ordered, args.md)
+    print(open(args.md).read())
+    plot(ordered, args.png)
+    print("wrote %s, %s and %s" % (args.csv, args.md, args.png))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,109 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+-------------------------------------------------------------------------------
+License
+    This file is part of dpiFoam, distributed under the GNU General Public
+    License version 3 or (at your option) any later version; see LICENSE.
+\*---------------------------------------------------------------------------*/
+
+#include "wallContacts.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::wallContacts::prepare(const scalar reach)
+{
+    if (reach > reach_)
+    {
+        // A little margin so a slightly larger parcel does not re-bin
+        reach_ = 1.1*reach;
+        for (demWall& w : walls_)
+        {
+            w.prepare(reach_);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::wallContacts::wallContacts
+(
+    const dictionary& dict,
+    const polyMesh* mesh,
+    const demMaterials& materials
+)
+:
+    walls_(),
+    material_(),
+    reach_(0)
+{
+    const dictionary* wallsDict = dict.findDict("walls");
+    if (!wallsDict)
+    {
+        return;
+    }
+
+    const wordList names(wallsDict->toc());
+
+    if (names.size() > contactHistory::maxWalls)
+    {
+        FatalIOErrorInFunction(*wallsDict)
+            << names.size() << " walls in dictionary " << wallsDict->name()
+            << "; at most " << contactHistory::maxWalls << " are supported"
+            << " (merge walls of the same material into one triangles or"
+            << " patch wall)" << exit(FatalIOError);
+    }
+
+    walls_.setSize(names.size());
+    material_.setSize(names.size());
+
+    forAll(names, wi)
+    {
+        const dictionary& wd = wallsDict->subDict(names[wi]);
+        walls_.set(wi, demWall::New(names[wi], wd, mesh));
+        material_[wi] =
+            materials.typeIndex(walls_[wi].material(), wd, "material");
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::wallContacts::findCandidates
+(
+    const demState& s,
+    const contactModels& models,
+    const scalar rMax,
+    const scalar range,
+    const scalar skin
+)
+{
+    // Walls must see every sphere within its radius plus cohesion range,
+    // and, for the near-wall test below, the skin
+    prepare(rMax + range + skin);
+
+    const label n = s.size();
+    const label nWalls = walls_.size();
+    nearWall_.clear();
+    candStart_.setSize(n*nWalls + 1);
+    cand_.clear();
+    for (label p = 0; p < n; ++p)
+    {
+        const scalar rp = s.r[p];
+        const scalar query = rp + models.maxRange(rp) + skin;
+        const label start = cand_.size();
+        forAll(walls_, w)
+        {
+            candStart_[p*nWalls + w] = cand_.size();
+            walls_[w].findCandidates(s.x[p], query, cand_);
+        }
+        if (cand_.size() > start)
+        {
+            nearWall_.append(p);
+        }
+    }
+    candStart_[n*nWalls] = cand_.size();
+}
+
+
+// ************************************************************************* //
