@@ -10,6 +10,8 @@ License
 #include "dpiInjectionModel.H"
 #include "IStringStream.H"
 #include "error.H"
+#include "OFstream.H"
+#include "OSspecific.H"
 
 using namespace Foam;
 
@@ -98,3 +100,80 @@ TEST(singleParticles, badInputIsRefused)
 }
 
 // ************************************************************************* //
+
+
+// particleList reads plain OpenFOAM lists (with or without a FoamFile
+// header) and gives the same specs as the equivalent singleParticles
+// entries: positions, optional velocities and diameters, one type for all.
+// Mismatched lengths and a missing file are refused naming the entry.
+TEST(particleList, readsListFilesLikeSingleParticles)
+{
+    FatalError.throwExceptions();
+    FatalIOError.throwExceptions();
+
+    const fileName dir("particleListTest.dir");
+    mkDir(dir);
+    {
+        OFstream os(dir/"x");
+        os  << "FoamFile { version 2.0; format ascii; class vectorField;"
+            << " object x; }" << nl
+            << "2 ( (1 2 3) (4 5 6) )" << nl;
+    }
+    {
+        OFstream os(dir/"U");
+        os  << "2 ( (0 -3 0) (0 0 1) )" << nl;
+    }
+    {
+        OFstream os(dir/"d");
+        os  << "1 ( 7e-5 )" << nl;
+    }
+
+    const std::string path(cwd()/dir);
+    const dictionary d = dictFrom
+    (
+        (
+            "type particleList; SOI 0; particleType carrier;"
+            "positions \"" + path + "/x\"; velocities \"" + path + "/U\";"
+        ).c_str()
+    );
+    autoPtr<dpiInjectionModel> m = dpiInjectionModel::New("bed", d);
+
+    DynamicList<injectionSpec> out;
+    m->inject(0, 1e-5, out);
+    ASSERT_EQ(out.size(), 2);
+    EXPECT_EQ(out[1].position, point(4, 5, 6));
+    EXPECT_EQ(out[0].U, vector(0, -3, 0));
+    EXPECT_EQ(out[1].omega, vector::zero);
+    EXPECT_EQ(out[0].type, "carrier");
+    EXPECT_LT(out[0].d, 0) << "no diameters file: the type's diameter";
+
+    // One diameter for two positions
+    try
+    {
+        dictionary bad(d);
+        bad.set("diameters", fileName(path + "/d"));
+        dpiInjectionModel::New("bed", bad);
+        FAIL() << "1 diameter for 2 positions accepted";
+    }
+    catch (const Foam::error& e)
+    {
+        EXPECT_NE(std::string(e.message()).find("1 diameters but 2"), std::string::npos)
+            << e.message();
+    }
+
+    // A missing file
+    try
+    {
+        dictionary bad(d);
+        bad.set("positions", fileName(path + "/nothing"));
+        dpiInjectionModel::New("bed", bad);
+        FAIL() << "missing positions file accepted";
+    }
+    catch (const Foam::error& e)
+    {
+        EXPECT_NE(std::string(e.message()).find("Cannot read file"), std::string::npos)
+            << e.message();
+    }
+
+    rmDir(dir);
+}

@@ -61,6 +61,19 @@ Foam::dpiInjectionModels::singleParticles::singleParticles
 }
 
 
+Foam::dpiInjectionModels::singleParticles::singleParticles
+(
+    const word& name,
+    const dictionary& dict,
+    const wordList& modelKeys,
+    List<injectionSpec>&& particles
+)
+:
+    dpiInjectionModel(name, dict, modelKeys),
+    particles_(std::move(particles))
+{}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::dpiInjectionModels::singleParticles::inject
