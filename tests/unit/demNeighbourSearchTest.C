@@ -154,7 +154,7 @@ namespace
 // A 3 x 3 x 3 lattice of 2 mm spheres, slightly overlapping, with random
 // velocities and spins, settling on a floor with friction and rolling
 // resistance: many persistent pair and wall contacts with history
-dictionary pileDeck()
+dictionary pileDeck(const word& skin = "2e-4")
 {
     IStringStream is
     (
@@ -172,7 +172,7 @@ dictionary pileDeck()
         "cohesionModel none;"
         "walls { floor { type plane; point (0 0 0); normal (0 0 1);"
         "                material wall; } }"
-        "neighbourSearch { skin 2e-4; }"
+        "neighbourSearch { skin " + skin + "; }"
         "timeStepCheck { maxImpactVelocity 0.2; }"
     );
     return dictionary(is);
@@ -301,3 +301,53 @@ TEST(demNeighbourSearch, historyRestartRoundTrip)
 
 
 // ************************************************************************* //
+
+
+// Which pairs and wall elements are visited must not change a bit: a pair
+// out of range adds nothing and its history is cleared when it separates
+// (theory 1.6). The skin decides the Verlet list, the near skin derived
+// from it (pairContacts::buildNear), the wall candidates and how often all
+// are rebuilt; three skins from a hundredth of a radius (rebuilds every
+// few steps) to more than the pile (never) must give the same states and
+// histories, compared with EXPECT_EQ on doubles (no tolerance).
+TEST(demNeighbourSearch, resultIndependentOfSkin)
+{
+    FatalError.throwExceptions();
+    FatalIOError.throwExceptions();
+
+    const wordList skins({"1e-5", "2e-4", "1e-2"});
+    List<demState> states(skins.size(), pile());
+    PtrList<demEngine> engines(skins.size());
+    const vector g(0, 0, -9.81);
+
+    forAll(skins, e)
+    {
+        engines.set(e, new demEngine(pileDeck(skins[e])));
+        engines[e].evolve(states[e], 500*1e-5, g);
+    }
+
+    // Contacts with history exist, and the small skin rebuilt its list
+    EXPECT_GT(engines[0].nHistory(), 20);
+    EXPECT_GT(engines[0].diagnostics().nWallContacts, 0);
+    EXPECT_GT(engines[0].neighbours().nBuilds(), engines[2].neighbours().nBuilds());
+
+    for (label e = 1; e < skins.size(); ++e)
+    {
+        const demState& a = states[0];
+        const demState& b = states[e];
+        for (label i = 0; i < a.size(); ++i)
+        {
+            EXPECT_EQ(a.x[i], b.x[i]) << "skin " << skins[e];
+            EXPECT_EQ(a.v[i], b.v[i]) << "skin " << skins[e];
+            EXPECT_EQ(a.omega[i], b.omega[i]) << "skin " << skins[e];
+
+            DynamicList<label> ka, kb;
+            DynamicList<vector> xa, xb;
+            engines[0].history(a.globalId[i], ka, xa);
+            engines[e].history(a.globalId[i], kb, xb);
+            EXPECT_EQ(ka, kb);
+            EXPECT_EQ(xa, xb);
+        }
+        EXPECT_EQ(engines[0].nHistory(), engines[e].nHistory());
+    }
+}
