@@ -84,11 +84,13 @@ def row(case):
         pass
 
     order = "random"
-    try:
-        with open(os.path.join(case, "constant", "carrierParticles")) as f:
-            order = f.readline().split("order")[1].split()[0]
-    except (OSError, IndexError):
-        pass
+    for name in ("carrierPositions", "carrierParticles"):
+        try:
+            with open(os.path.join(case, "constant", name)) as f:
+                order = f.readline().split("order")[1].split()[0]
+            break
+        except (OSError, IndexError):
+            pass
 
     r = {
         "N": n, "np": nproc, "order": order, "steps": steps, "fluid_steps": log["nFluid"],
