@@ -64,12 +64,8 @@ void Foam::agglomerateTracker::linkedPairs
         return;
     }
 
-    scalar rMax = 0;
+    const scalar rMax = s.maxRadius();
     boundBox bb(s.x, false);
-    forAll(s.r, i)
-    {
-        rMax = max(rMax, s.r[i]);
-    }
 
     // Any linked pair has centres closer than 2 rMax + linkGap: with cells
     // at least that size, partners are in the 27 surrounding cells

@@ -151,11 +151,7 @@ void Foam::demEngine::rebuild(const demState& s)
 
     flushHistory();
 
-    scalar rMax = 0;
-    for (const scalar r : s.r)
-    {
-        rMax = max(rMax, r);
-    }
+    const scalar rMax = s.maxRadius();
 
     pairs_.build(s, models_, models_.maxRange(rMax));
     history_.load(s.globalId, pairs_.rows(), pairs_.starts(), pairs_.partners());
@@ -171,11 +167,7 @@ void Foam::demEngine::buildNear(const demState& s)
 
     // The wall candidates within the near skin: valid as long as the near
     // list (no row has moved more than half the near skin)
-    scalar rMax = 0;
-    for (const scalar r : s.r)
-    {
-        rMax = max(rMax, r);
-    }
+    const scalar rMax = s.maxRadius();
     walls_.findCandidates
     (
         s, models_, rMax, models_.maxRange(rMax), pairs_.nearSkin()

@@ -89,11 +89,7 @@ void Foam::demEngine::checkStartState(const demState& s, const word& when)
         }
     }
 
-    scalar rMax = 0;
-    forAll(s.r, p)
-    {
-        rMax = max(rMax, s.r[p]);
-    }
+    const scalar rMax = s.maxRadius();
 
     // Pairs: a grid of cells 2 rMax wide, so an overlapping pair lies in
     // neighbouring cells

@@ -26,8 +26,8 @@ void Foam::pairContacts::forces
 ) const
 {
     const label nOwned = s.owned();
-    List<vector>& pairXi = h.nearXi();
-    List<bool>& pairHasXi = h.nearHasXi();
+    List<vector>& nearXi = h.nearXi();
+    List<bool>& nearHasXi = h.nearHasXi();
 
     demContact c;
     c.wall = false;
@@ -63,11 +63,10 @@ void Foam::pairContacts::forces
 
             if (r2 >= nearCut2_[m])
             {
-                const label k = m;
-                if (advance && pairHasXi[k])
+                if (advance && nearHasXi[m])
                 {
-                    pairXi[k] = Zero;
-                    pairHasXi[k] = false;
+                    nearXi[m] = Zero;
+                    nearHasXi[m] = false;
                 }
                 continue;
             }
@@ -85,14 +84,12 @@ void Foam::pairContacts::forces
             c.mstar = s.m[i]*s.m[j]/(s.m[i] + s.m[j]);
 
             const scalar S = pairScaling::pair(s.N[i], s.N[j]);
-            const label k = m;
-
             if (!c.touching())
             {
-                if (advance && pairHasXi[k])
+                if (advance && nearHasXi[m])
                 {
-                    pairXi[k] = Zero;
-                    pairHasXi[k] = false;
+                    nearXi[m] = Zero;
+                    nearHasXi[m] = false;
                 }
                 vector F;
                 if (law.separated(c, S, F))
@@ -111,13 +108,13 @@ void Foam::pairContacts::forces
                 (vr - c.vn*c.n) - ((c.ci*s.omega[i] + c.cj*s.omega[j]) ^ c.n);
             c.omegaRel = s.omega[i] - s.omega[j];
 
-            vector xi(pairXi[k]);
+            vector xi(nearXi[m]);
             vector F, Ti, Tj;
             law.touching(c, S, xi, F, Ti, Tj);
             if (advance)
             {
-                pairXi[k] = xi;
-                pairHasXi[k] = true;
+                nearXi[m] = xi;
+                nearHasXi[m] = true;
             }
 
             f[i] += F;
