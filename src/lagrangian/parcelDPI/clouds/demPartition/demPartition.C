@@ -563,12 +563,13 @@ void Foam::demPartition::evolve
     demState& s,
     const scalar Dt,
     const vector& g,
-    demObserver* obs
+    demObserver* obs,
+    demSubStepForces* ext
 )
 {
     distribute(s);
 
-    engine_.evolve(dem_, Dt, g, obs);
+    engine_.evolve(dem_, Dt, g, obs, ext);
 }
 
 

@@ -7,6 +7,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "dpiFluidCoupling.H"
+#include "dpiSubStepForces.H"
 #include "IOdictionary.H"
 #include "dictKeys.H"
 #include "mathematicalConstants.H"
@@ -130,44 +131,13 @@ void Foam::dpiFluidCoupling::checkTimeStep(const demMaterials& mat) const
 }
 
 
-void Foam::dpiFluidCoupling::rowForce
-(
-    const dpiFluidForce::fluidState& fl,
-    const vector& v,
-    const scalar d,
-    const scalar N,
-    vector& F,
-    vector& Fc,
-    scalar& Spc
-) const
-{
-    F = Zero;
-    Fc = Zero;
-    Spc = 0;
-
-    forAll(forces_, k)
-    {
-        const dpiFluidForce::forceSuSp f = forces_[k].force(fl, v, d, N);
-
-        const vector Fk(f.Su + f.Sp*(fl.U + fl.Uturb - v));
-        F += Fk;
-
-        if (forces_[k].coupled())
-        {
-            Fc += Fk;
-            Spc += f.Sp;
-        }
-    }
-}
-
-
 void Foam::dpiFluidCoupling::setForces(demState& s)
 {
     for (label i = 0; i < nRows_; ++i)
     {
-        rowForce
+        dpiFluidForce::sum
         (
-            fluid_[i], s.v[i], 2*s.r[i], s.N[i],
+            forces_, fluid_[i], s.v[i], 2*s.r[i], s.N[i],
             s.fExt[i], fCoupled_[i], spCoupled_[i]
         );
     }
@@ -255,54 +225,24 @@ void Foam::dpiFluidCoupling::subStepRows
             << exit(FatalError);
     }
 
-    List<dpiFluidForce::fluidState> fl(n);
-    List<dpiTurbulentDispersion::sgs> sg(n);
-    for (label i = 0; i < n; ++i)
-    {
-        fl[i].U = vecIn[0][i];
-        fl[i].Uturb = vecIn[1][i];
-        fl[i].gradp = vecIn[2][i];
-        fl[i].alpha = scaIn[0][i];
-        fl[i].rho = scaIn[1][i];
-        fl[i].nu = scaIn[2][i];
-        sg[i].k = scaIn[3][i];
-        sg[i].tau = scaIn[4][i];
-    }
+    // One engine call for the fluid step; the forces are set before each
+    // sub-step by the hook
+    dpiSubStepForces forces
+    (
+        forces_, dispersion_.get(), n, vecIn, scaIn, dt, nSub,
+        refreshInterval_, mesh_.time().timeIndex()
+    );
+    stepper.evolve(s, Dt, g, obs, &forces);
 
     // Out: the coupled impulse sum dt Fc and u* (vectors), sum dt Sp
     vecOut.setSize(2);
-    vecOut[0].setSize(n, Zero);
-    vecOut[1].setSize(n);
+    vecOut[0] = forces.impulse();
+    vecOut[1] = forces.uStar();
     scaOut.setSize(1);
-    scaOut[0].setSize(n, 0);
-    vectorField& impulse = vecOut[0];
-    scalarField& spImpulse = scaOut[0];
-
-    const label step = mesh_.time().timeIndex();
-    vector Fc;
-    scalar Spc;
-    for (label sub = 0; sub < nSub; ++sub)
-    {
-        for (label i = 0; i < n; ++i)
-        {
-            if (dispersion_.valid())
-            {
-                fl[i].Uturb = dispersion_->update
-                (
-                    fl[i].Uturb, sg[i], dt, s.globalId[i], step, sub + 1
-                );
-            }
-            rowForce(fl[i], s.v[i], 2*s.r[i], s.N[i], s.fExt[i], Fc, Spc);
-            impulse[i] += dt*Fc;
-            spImpulse[i] += dt*Spc;
-        }
-
-        stepper.evolve(s, dt, g, obs);
-    }
+    scaOut[0] = forces.spImpulse();
 
     for (label i = 0; i < n; ++i)
     {
-        vecOut[1][i] = fl[i].Uturb;
         s.fExt[i] = Zero;
     }
 }
@@ -327,6 +267,7 @@ Foam::dpiFluidCoupling::dpiFluidCoupling
     (
         updateModeNames.getOrDefault("dragUpdate", dict_, updateMode::held)
     ),
+    refreshInterval_(dict_.getOrDefault<label>("refreshInterval", 1)),
     interpolation_(dict_.getOrDefault<word>("interpolation", "cellPoint")),
     forces_(),
     U_(U),
@@ -361,8 +302,8 @@ Foam::dpiFluidCoupling::dpiFluidCoupling
     (
         dict_,
         {
-            "dragUpdate", "interpolation", "forces", "voidFraction",
-            "turbulentDispersion", "alpha", "p"
+            "dragUpdate", "refreshInterval", "interpolation", "forces",
+            "voidFraction", "turbulentDispersion", "alpha", "p"
         }
     );
 
@@ -430,9 +371,32 @@ Foam::dpiFluidCoupling::dpiFluidCoupling
             << " is not one of (cellPoint cell)" << exit(FatalIOError);
     }
 
+    if (refreshInterval_ < 1)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "fluidCoupling/refreshInterval " << refreshInterval_
+            << " in " << dict_.name() << " is not a positive number of DEM"
+            << " sub-steps (1: the forces and u* at every sub-step)"
+            << exit(FatalIOError);
+    }
+    if (dict_.found("refreshInterval") && update_ != updateMode::subStep)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "fluidCoupling/refreshInterval is given in " << dict_.name()
+            << " with dragUpdate " << updateModeNames[update_] << ": it is"
+            << " the sub-steps between force evaluations of dragUpdate"
+            << " subStep (held evaluates once per fluid step). Set"
+            << " dragUpdate subStep, or remove refreshInterval"
+            << exit(FatalIOError);
+    }
+
     Info<< "Fluid coupling: forces " << names << ", dragUpdate "
-        << updateModeNames[update_] << ", interpolation " << interpolation_
-        << endl;
+        << updateModeNames[update_];
+    if (update_ == updateMode::subStep)
+    {
+        Info<< " (refreshInterval " << refreshInterval_ << ")";
+    }
+    Info<< ", interpolation " << interpolation_ << endl;
 
     forces_.setSize(names.size());
     bool needP = false;

@@ -56,4 +56,72 @@ Foam::dpiFluidForce::New(const word& name, const dictionary& coeffs)
 }
 
 
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
+
+void Foam::dpiFluidForce::sum
+(
+    const PtrList<dpiFluidForce>& forces,
+    const fluidState& fl,
+    const vector& v,
+    const scalar d,
+    const scalar N,
+    vector& F,
+    vector& Fc,
+    scalar& Spc
+)
+{
+    F = Zero;
+    Fc = Zero;
+    Spc = 0;
+
+    forAll(forces, k)
+    {
+        const forceSuSp f = forces[k].force(fl, v, d, N);
+
+        const vector Fk(f.Su + f.Sp*(fl.U + fl.Uturb - v));
+        F += Fk;
+
+        if (forces[k].coupled())
+        {
+            Fc += Fk;
+            Spc += f.Sp;
+        }
+    }
+}
+
+
+void Foam::dpiFluidForce::linearise
+(
+    const PtrList<dpiFluidForce>& forces,
+    const fluidState& fl,
+    const vector& v,
+    const scalar d,
+    const scalar N,
+    vector& Su,
+    scalar& Sp,
+    vector& SuC,
+    scalar& SpC
+)
+{
+    Su = Zero;
+    Sp = 0;
+    SuC = Zero;
+    SpC = 0;
+
+    forAll(forces, k)
+    {
+        const forceSuSp f = forces[k].force(fl, v, d, N);
+
+        Su += f.Su;
+        Sp += f.Sp;
+
+        if (forces[k].coupled())
+        {
+            SuC += f.Su;
+            SpC += f.Sp;
+        }
+    }
+}
+
+
 // ************************************************************************* //

@@ -1,0 +1,133 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+-------------------------------------------------------------------------------
+License
+    This file is part of dpiFoam, distributed under the GNU General Public
+    License version 3 or (at your option) any later version; see LICENSE.
+\*---------------------------------------------------------------------------*/
+
+#include "dpiSubStepForces.H"
+#include "demState.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::dpiSubStepForces::dpiSubStepForces
+(
+    const PtrList<dpiFluidForce>& forces,
+    const dpiTurbulentDispersion* dispersion,
+    const label n,
+    const List<vectorField>& vecIn,
+    const List<scalarField>& scaIn,
+    const scalar dt,
+    const label nSub,
+    const label refresh,
+    const label timeIndex
+)
+:
+    forces_(forces),
+    dispersion_(dispersion),
+    n_(n),
+    dt_(dt),
+    nSub_(nSub),
+    refresh_(refresh),
+    timeIndex_(timeIndex),
+    fluid_(n),
+    sgs_(n),
+    Su_(refresh > 1 ? n : 0),
+    Sp_(refresh > 1 ? n : 0),
+    SuCoupled_(refresh > 1 ? n : 0),
+    SpCoupled_(refresh > 1 ? n : 0),
+    impulse_(n, Zero),
+    spImpulse_(n, 0)
+{
+    for (label i = 0; i < n; ++i)
+    {
+        dpiFluidForce::fluidState& fl = fluid_[i];
+        fl.U = vecIn[0][i];
+        fl.Uturb = vecIn[1][i];
+        fl.gradp = vecIn[2][i];
+        fl.alpha = scaIn[0][i];
+        fl.rho = scaIn[1][i];
+        fl.nu = scaIn[2][i];
+        sgs_[i].k = scaIn[3][i];
+        sgs_[i].tau = scaIn[4][i];
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::dpiSubStepForces::setForces(const label sub, demState& s)
+{
+    if (refresh_ == 1)
+    {
+        // The reference: everything at every sub-step
+        vector Fc;
+        scalar Spc;
+        for (label i = 0; i < n_; ++i)
+        {
+            dpiFluidForce::fluidState& fl = fluid_[i];
+            if (dispersion_)
+            {
+                fl.Uturb = dispersion_->update
+                (
+                    fl.Uturb, sgs_[i], dt_, s.globalId[i], timeIndex_, sub + 1
+                );
+            }
+            dpiFluidForce::sum
+            (
+                forces_, fl, s.v[i], 2*s.r[i], s.N[i], s.fExt[i], Fc, Spc
+            );
+            impulse_[i] += dt_*Fc;
+            spImpulse_[i] += dt_*Spc;
+        }
+        return;
+    }
+
+    if (sub % refresh_ == 0)
+    {
+        // u* over the coming interval (the last may be shorter), drawn
+        // with the key of the interval's first sub-step, and the forces'
+        // linearisation at the current velocity
+        const scalar dtU = min(refresh_, nSub_ - sub)*dt_;
+        for (label i = 0; i < n_; ++i)
+        {
+            dpiFluidForce::fluidState& fl = fluid_[i];
+            if (dispersion_)
+            {
+                fl.Uturb = dispersion_->update
+                (
+                    fl.Uturb, sgs_[i], dtU, s.globalId[i], timeIndex_, sub + 1
+                );
+            }
+            dpiFluidForce::linearise
+            (
+                forces_, fl, s.v[i], 2*s.r[i], s.N[i],
+                Su_[i], Sp_[i], SuCoupled_[i], SpCoupled_[i]
+            );
+        }
+    }
+
+    for (label i = 0; i < n_; ++i)
+    {
+        const dpiFluidForce::fluidState& fl = fluid_[i];
+        const vector slip(fl.U + fl.Uturb - s.v[i]);
+        s.fExt[i] = Su_[i] + Sp_[i]*slip;
+        impulse_[i] += dt_*(SuCoupled_[i] + SpCoupled_[i]*slip);
+        spImpulse_[i] += dt_*SpCoupled_[i];
+    }
+}
+
+
+Foam::vectorField Foam::dpiSubStepForces::uStar() const
+{
+    vectorField u(n_);
+    forAll(u, i)
+    {
+        u[i] = fluid_[i].Uturb;
+    }
+    return u;
+}
+
+
+// ************************************************************************* //
