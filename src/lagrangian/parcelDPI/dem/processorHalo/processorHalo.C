@@ -126,38 +126,71 @@ void Foam::processorHalo::build
 
 void Foam::processorHalo::update(demState& s)
 {
-    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    // Every sub-step: the sizes are known on both sides since the build, so
+    // the values go as raw doubles, receives posted first, without the
+    // size exchange and stream encoding of PstreamBuffers (a collective
+    // all-to-all per call: it was most of the halo's cost)
+    const label nProcs = Pstream::nProcs();
+    sendBuf_.setSize(nProcs);
+    recvBuf_.setSize(nProcs);
+    const int tag = UPstream::msgType();
+    const label startRequest = UPstream::nRequests();
+
+    forAll(recvSize_, proci)
+    {
+        if (recvSize_[proci])
+        {
+            scalarList& buf = recvBuf_[proci];
+            buf.setSize(9*recvSize_[proci]);
+            UIPstream::read
+            (
+                UPstream::commsTypes::nonBlocking, proci,
+                reinterpret_cast<char*>(buf.data()), buf.byteSize(), tag
+            );
+        }
+    }
 
     forAll(sendRows_, proci)
     {
         const labelList& rows = sendRows_[proci];
-        if (rows.size())
-        {
-            UOPstream os(proci, pBufs);
-            os  << List<point>(UIndirectList<point>(s.x, rows))
-                << List<vector>(UIndirectList<vector>(s.v, rows))
-                << List<vector>(UIndirectList<vector>(s.omega, rows));
-        }
-    }
-
-    pBufs.finishedSends();
-
-    forAll(recvSize_, proci)
-    {
-        if (!recvSize_[proci])
+        if (rows.empty())
         {
             continue;
         }
-        UIPstream is(proci, pBufs);
-        const List<point> x(is);
-        const List<vector> v(is);
-        const List<vector> omega(is);
-        const label start = recvStart_[proci];
-        forAll(x, k)
+        scalarList& buf = sendBuf_[proci];
+        buf.setSize(9*rows.size());
+        label k = 0;
+        for (const label row : rows)
         {
-            s.x[start + k] = x[k];
-            s.v[start + k] = v[k];
-            s.omega[start + k] = omega[k];
+            for (const vector* w : {&s.x[row], &s.v[row], &s.omega[row]})
+            {
+                buf[k++] = w->x();
+                buf[k++] = w->y();
+                buf[k++] = w->z();
+            }
+        }
+        UOPstream::write
+        (
+            UPstream::commsTypes::nonBlocking, proci,
+            reinterpret_cast<const char*>(buf.cdata()), buf.byteSize(), tag
+        );
+    }
+
+    UPstream::waitRequests(startRequest);
+
+    forAll(recvSize_, proci)
+    {
+        const scalarList& buf = recvBuf_[proci];
+        const label start = recvStart_[proci];
+        label k = 0;
+        for (label row = start; row < start + recvSize_[proci]; ++row)
+        {
+            for (vector* w : {&s.x[row], &s.v[row], &s.omega[row]})
+            {
+                w->x() = buf[k++];
+                w->y() = buf[k++];
+                w->z() = buf[k++];
+            }
         }
     }
 }

@@ -31,6 +31,8 @@ Foam::dpiSubStepForces::dpiSubStepForces
     nSub_(nSub),
     refresh_(refresh),
     timeIndex_(timeIndex),
+    uInterval_(refresh > 1 ? n : 0, refresh),
+    uNext_(refresh > 1 ? n : 0, 0),
     fluid_(n),
     sgs_(n),
     Su_(refresh > 1 ? n : 0),
@@ -51,6 +53,21 @@ Foam::dpiSubStepForces::dpiSubStepForces
         fl.nu = scaIn[2][i];
         sgs_[i].k = scaIn[3][i];
         sgs_[i].tau = scaIn[4][i];
+    }
+
+    // u* held over at most a tenth of its time scale (see the header)
+    if (refresh > 1 && dispersion_)
+    {
+        for (label i = 0; i < n; ++i)
+        {
+            const scalar tau = sgs_[i].tau;
+            if (tau > 0)
+            {
+                const scalar steps = 0.1*tau/dt;
+                uInterval_[i] =
+                    steps >= refresh ? refresh : max(label(1), label(steps));
+            }
+        }
     }
 }
 
@@ -84,25 +101,33 @@ void Foam::dpiSubStepForces::setForces(const label sub, demState& s)
         return;
     }
 
-    if (sub % refresh_ == 0)
+    // u* of the rows due, over their coming interval (the last may be
+    // shorter), drawn with the key of the interval's first sub-step
+    if (dispersion_)
     {
-        // u* over the coming interval (the last may be shorter), drawn
-        // with the key of the interval's first sub-step, and the forces'
-        // linearisation at the current velocity
-        const scalar dtU = min(refresh_, nSub_ - sub)*dt_;
         for (label i = 0; i < n_; ++i)
         {
-            dpiFluidForce::fluidState& fl = fluid_[i];
-            if (dispersion_)
+            if (uNext_[i] == sub)
             {
-                fl.Uturb = dispersion_->update
+                const label nU = min(uInterval_[i], nSub_ - sub);
+                fluid_[i].Uturb = dispersion_->update
                 (
-                    fl.Uturb, sgs_[i], dtU, s.globalId[i], timeIndex_, sub + 1
+                    fluid_[i].Uturb, sgs_[i], nU*dt_, s.globalId[i],
+                    timeIndex_, sub + 1
                 );
+                uNext_[i] = sub + nU;
             }
+        }
+    }
+
+    // The forces' linearisation at the current velocity
+    if (sub % refresh_ == 0)
+    {
+        for (label i = 0; i < n_; ++i)
+        {
             dpiFluidForce::linearise
             (
-                forces_, fl, s.v[i], 2*s.r[i], s.N[i],
+                forces_, fluid_[i], s.v[i], 2*s.r[i], s.N[i],
                 Su_[i], Sp_[i], SuCoupled_[i], SpCoupled_[i]
             );
         }
