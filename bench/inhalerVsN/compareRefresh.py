@@ -1,8 +1,9 @@
 #!/usr/bin/python3
-"""Compare two inhalerVsN result tables (run.sh --refresh): the reference
+"""Compare two inhalerVsN result tables (run --refresh): the reference
 (refreshInterval 1) and K. Per N and measure: mean +- std of both, the
-difference of the means in units of the reference's seed-to-seed std and
-its standard error of the difference, and the stage-2 CPU ratio."""
+difference of the means in units of the reference's seed-to-seed std (the
+issue's criterion: inside the spread) and of its standard error (whether
+it is a shift at all), and the stage-2 CPU ratio."""
 import argparse
 import csv
 import math
@@ -29,8 +30,9 @@ def main():
     ref, oth = load(a.ref), load(a.other)
     Ns = sorted({int(r["N"]) for r in ref})
     head = ("| N | measure | refreshInterval 1: mean +- std | %s: mean +- std "
-            "| difference | difference / std(1) | inside the spread |" % a.K)
-    lines = [head, "|---:|---|---:|---:|---:|---:|---|"]
+            "| difference | difference / std(1) | difference / its standard "
+            "error | inside the spread |" % a.K)
+    lines = [head, "|---:|---|---:|---:|---:|---:|---:|---|"]
     allInside = True
     for N in Ns:
         r = [x for x in ref if int(x["N"]) == N]
@@ -42,12 +44,15 @@ def main():
             so = xo.std(ddof=1) if len(xo) > 1 else float("nan")
             d = xo.mean() - xr.mean()
             ratio = abs(d)/sr if sr > 0 else (0.0 if d == 0 else float("inf"))
+            se = math.sqrt(sr**2/len(xr) + so**2/len(xo)) \
+                if len(xr) > 1 and len(xo) > 1 else float("nan")
+            z = abs(d)/se if se > 0 else (0.0 if d == 0 else float("inf"))
             inside = ratio <= 1
             allInside = allInside and inside
             lines.append("| %d | %s | %.4g +- %.2g | %.4g +- %.2g | %+.3g | "
-                         "%.2f | %s |" % (N, label, xr.mean(), sr, xo.mean(),
-                                          so, d, ratio,
-                                          "yes" if inside else "**no**"))
+                         "%.2f | %.1f | %s |" % (
+                             N, label, xr.mean(), sr, xo.mean(), so, d, ratio,
+                             z, "yes" if inside else "**no**"))
     lines.append("")
     cols = ["N", "stage 2 CPU [s], 1", "stage 2 CPU [s], %s" % a.K,
             "speed-up of stage 2", "whole run CPU [s], 1",
