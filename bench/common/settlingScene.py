@@ -376,13 +376,14 @@ injectors
     {
         type            particleList;
         particleType    carrier;
+        order           %(idOrder)s;
         positions       "<constant>/carrierPositions";
         velocities      "<constant>/carrierVelocities";
     }
 }
 """ % dict(preamble=dpiCloudPreamble(DENSITY), rho=DENSITY, dt=dt, d=DIAMETER, E=YOUNG, nu=POISSON,
            e=RESTITUTION, mu=FRICTION, skin=args.skin,
-           vmax=args.max_impact_velocity))
+           vmax=args.max_impact_velocity, idOrder=args.dpi_order))
 
 
 def writeLiggghtsData(path, x, v, L, title):
@@ -671,6 +672,10 @@ def main():
     ap.add_argument("--order", choices=("random", "morton"), default="random",
                     help="order of the particle list (the parcels' rows): "
                     "random (as placed) or sorted along a Morton curve")
+    ap.add_argument("--dpi-order", choices=("none", "morton"),
+                    default="none",
+                    help="dpiFoam: the injector's order (globalIds as "
+                    "listed, or along a Morton curve)")
     ap.add_argument("--of-cell", type=float, default=2.0,
                     help="openfoam: mesh cell edge in diameters")
     ap.add_argument("--of-write-end", action="store_true",

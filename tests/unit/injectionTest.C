@@ -8,6 +8,7 @@ License
 
 #include <gtest/gtest.h>
 #include "dpiInjectionModel.H"
+#include "mortonOrder.H"
 #include "IStringStream.H"
 #include "error.H"
 #include "OFstream.H"
@@ -99,7 +100,6 @@ TEST(singleParticles, badInputIsRefused)
     );
 }
 
-// ************************************************************************* //
 
 
 // particleList reads plain OpenFOAM lists (with or without a FoamFile
@@ -177,3 +177,86 @@ TEST(particleList, readsListFilesLikeSingleParticles)
 
     rmDir(dir);
 }
+
+
+// `order morton` lists an injector's batch along a Morton (Z-order) curve
+// before the ids are given; entries of earlier injectors are left alone,
+// points of one cell keep their order, `none` changes nothing, and an
+// unknown order is refused naming the valid ones.
+TEST(injectionOrder, mortonListsTheBatchAlongTheCurve)
+{
+    FatalError.throwExceptions();
+    FatalIOError.throwExceptions();
+
+    // The eight cells of a 2 x 2 x 2 block (cell 1 m): Z-order takes x
+    // fastest, then y, then z
+    EXPECT_EQ(mortonOrder::code(0, 0, 0), 0u);
+    EXPECT_EQ(mortonOrder::code(1, 0, 0), 1u);
+    EXPECT_EQ(mortonOrder::code(0, 1, 0), 2u);
+    EXPECT_EQ(mortonOrder::code(0, 0, 1), 4u);
+    EXPECT_EQ(mortonOrder::code(2, 0, 0), 8u) << "the next level up";
+    EXPECT_EQ(mortonOrder::code(3, 3, 3), 63u);
+
+    // A batch of the block's cell centres listed from the last to the
+    // first, and one more point in cell (0 0 0) listed after the others
+    std::string text("type singleParticles; order morton; particles (");
+    for (int c = 7; c >= 0; --c)
+    {
+        const int i = c & 1, j = (c >> 1) & 1, k = (c >> 2) & 1;
+        text += "{ type carrier; position (" + std::to_string(i + 0.5) + " "
+            + std::to_string(j + 0.5) + " " + std::to_string(k + 0.5)
+            + "); d " + std::to_string(c + 1) + "; }";
+    }
+    text += "{ type carrier; position (0.25 0.25 0.25); d 9; });";
+    autoPtr<dpiInjectionModel> m =
+        dpiInjectionModel::New("bed", dictFrom(text.c_str()));
+
+    DynamicList<injectionSpec> out;
+    injectionSpec before;
+    before.type = "earlier";
+    before.position = point(9, 9, 9);
+    out.append(before);
+    m->inject(0, 1, out);
+    ASSERT_EQ(out.size(), 10);
+    m->order(out, 1, 1.0);
+
+    EXPECT_EQ(out[0].type, "earlier") << "an earlier injector's entry moved";
+    // Cell c is the (c+1)-th listed cell (d = c + 1); the extra point is in
+    // cell 0 and was listed after the cell-0 centre, so it follows it
+    // (on cells of 1 m from the batch's box, whose corner is (0.25 ...))
+    const scalar expect[9] = {1, 9, 2, 3, 4, 5, 6, 7, 8};
+    for (label r = 0; r < 9; ++r)
+    {
+        EXPECT_EQ(out[1 + r].d, expect[r]) << "row " << r;
+    }
+
+    // none (the default): the list as given
+    const std::string asListed
+    (
+        "type singleParticles; particles ("
+        "{ type carrier; position (1 1 1); } { type carrier; position (0 0 0); });"
+    );
+    autoPtr<dpiInjectionModel> plain =
+        dpiInjectionModel::New("bed", dictFrom(asListed.c_str()));
+    DynamicList<injectionSpec> listed;
+    plain->inject(0, 1, listed);
+    plain->order(listed, 0, 0.1);
+    EXPECT_EQ(listed[0].position, point(1, 1, 1));
+
+    try
+    {
+        const std::string bad("type singleParticles; order hilbert; particles ("
+            "{ type carrier; position (0 0 0); });");
+        dpiInjectionModel::New("bed", dictFrom(bad.c_str()));
+        FAIL() << "order hilbert accepted";
+    }
+    catch (const Foam::error& e)
+    {
+        const std::string msg(e.message());
+        EXPECT_NE(msg.find("hilbert"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("none morton"), std::string::npos) << msg;
+    }
+}
+
+
+// ************************************************************************* //

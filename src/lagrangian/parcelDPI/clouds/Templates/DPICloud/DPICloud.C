@@ -540,10 +540,21 @@ Foam::label Foam::DPICloud<CloudType>::inject
     const scalar t1
 )
 {
+    const demMaterials& mat = engine_->materials();
+
+    // The curve's cell for `order morton`: the largest particle
+    scalar dMax = 0;
+    for (label typei = 0; typei < mat.size(); ++typei)
+    {
+        dMax = max(dMax, mat.diameter(typei));
+    }
+
     DynamicList<injectionSpec> specs;
     forAll(injectors_, i)
     {
+        const label start = specs.size();
         injectors_[i].inject(t0, t1, specs);
+        injectors_[i].order(specs, start, dMax);
     }
 
     if (returnReduce(specs.empty(), andOp<bool>()))
@@ -552,7 +563,6 @@ Foam::label Foam::DPICloud<CloudType>::inject
     }
 
     const fvMesh& mesh = this->mesh();
-    const demMaterials& mat = engine_->materials();
 
     // Owner processor of each position: local octree search, then one
     // element-wise min over processors (lowest processor wins, so the owner

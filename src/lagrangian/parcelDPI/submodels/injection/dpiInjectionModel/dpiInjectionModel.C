@@ -8,6 +8,7 @@ License
 
 #include "dpiInjectionModel.H"
 #include "dictKeys.H"
+#include "mortonOrder.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -29,12 +30,53 @@ Foam::dpiInjectionModel::dpiInjectionModel
 :
     name_(name),
     dict_(dict),
-    SOI_(dict.lookupOrDefault<scalar>("SOI", 0))
+    SOI_(dict.lookupOrDefault<scalar>("SOI", 0)),
+    morton_(false)
 {
     // type is read by the selector New
-    wordList known({"type", "SOI"});
+    wordList known({"type", "SOI", "order"});
     known.append(modelKeys);
     dictKeys::warnUnknown(dict, known);
+
+    const word order(dict.getOrDefault<word>("order", "none"));
+    if (order != "none" && order != "morton")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown order " << order << " for injector " << name
+            << " in dictionary " << dict.name() << nl
+            << "    valid orders: 2(none morton)" << exit(FatalIOError);
+    }
+    morton_ = (order == "morton");
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
+
+void Foam::dpiInjectionModel::order
+(
+    DynamicList<injectionSpec>& particles,
+    const label start,
+    const scalar cell
+) const
+{
+    if (!morton_ || particles.size() - start < 2)
+    {
+        return;
+    }
+
+    const SubList<injectionSpec> batch(particles, particles.size() - start, start);
+    List<point> x(batch.size());
+    forAll(batch, i)
+    {
+        x[i] = batch[i].position;
+    }
+
+    const List<injectionSpec> listed(batch);
+    const labelList idx(mortonOrder::order(x, cell));
+    forAll(idx, i)
+    {
+        particles[start + i] = listed[idx[i]];
+    }
 }
 
 
