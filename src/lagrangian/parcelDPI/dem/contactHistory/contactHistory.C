@@ -90,26 +90,9 @@ void Foam::contactHistory::setHistory
 }
 
 
-void Foam::contactHistory::load
-(
-    const labelUList& ids,
-    const labelUList& pairRow,
-    const labelUList& pairStart,
-    const labelUList& pairJ
-)
+void Foam::contactHistory::load(const labelUList& ids)
 {
-    const label np = pairJ.size();
-    pairXi_.setSize(np);
-    pairHasXi_.setSize(np);
-    forAll(pairRow, a)
-    {
-        const label idi = ids[pairRow[a]];
-        for (label k = pairStart[a]; k < pairStart[a + 1]; ++k)
-        {
-            pairXi_[k] = find(idi, ids[pairJ[k]]);
-            pairHasXi_[k] = (pairXi_[k] != vector::zero);
-        }
-    }
+    nearFromStore_ = true;
 
     Map<label> oldRow;
     List<DynamicList<wallContact>> oldState;
@@ -161,44 +144,80 @@ void Foam::contactHistory::load
 }
 
 
-void Foam::contactHistory::toNear(const labelUList& nearK)
+void Foam::contactHistory::toNear
+(
+    const labelUList& pairRow,
+    const labelUList& nearStart,
+    const labelUList& nearJ,
+    const labelUList& nearK,
+    const labelUList& oldNearK
+)
 {
-    nearXi_.setSize(nearK.size());
-    nearHasXi_.setSize(nearK.size());
-    forAll(nearK, m)
-    {
-        nearXi_[m] = pairXi_[nearK[m]];
-        nearHasXi_[m] = pairHasXi_[nearK[m]];
-    }
-}
+    const label m = nearK.size();
+    List<vector> xi(m, Zero);
+    List<bool> has(m, false);
 
+    if (nearFromStore_)
+    {
+        forAll(pairRow, a)
+        {
+            const label idi = workingIds_[pairRow[a]];
+            for (label k = nearStart[a]; k < nearStart[a + 1]; ++k)
+            {
+                xi[k] = find(idi, workingIds_[nearJ[k]]);
+                has[k] = (xi[k] != vector::zero);
+            }
+        }
+    }
+    else
+    {
+        if (oldNearK.size() != nearXi_.size())
+        {
+            FatalErrorInFunction
+                << "The previous near list (" << oldNearK.size()
+                << " pairs) is not the one of the working history ("
+                << nearXi_.size() << ")" << abort(FatalError);
+        }
 
-void Foam::contactHistory::syncPairs(const labelUList& nearK)
-{
-    if (nearK.size() != nearXi_.size())
-    {
-        return;
+        // Both lists ascend in the listed pair: one merge
+        label o = 0;
+        forAll(nearK, k)
+        {
+            while (o < oldNearK.size() && oldNearK[o] < nearK[k])
+            {
+                ++o;
+            }
+            if (o < oldNearK.size() && oldNearK[o] == nearK[k])
+            {
+                xi[k] = nearXi_[o];
+                has[k] = nearHasXi_[o];
+            }
+        }
     }
-    pairXi_ = Zero;
-    pairHasXi_ = false;
-    forAll(nearK, m)
-    {
-        pairXi_[nearK[m]] = nearXi_[m];
-        pairHasXi_[nearK[m]] = nearHasXi_[m];
-    }
+
+    nearXi_.transfer(xi);
+    nearHasXi_.transfer(has);
+    nearFromStore_ = false;
 }
 
 
 void Foam::contactHistory::flush
 (
     const labelUList& pairRow,
-    const labelUList& pairStart,
-    const labelUList& pairJ
+    const labelUList& nearStart,
+    const labelUList& nearJ
 )
 {
     if (!workingValid_)
     {
         return;
+    }
+    if (nearFromStore_ || nearJ.size() != nearXi_.size())
+    {
+        FatalErrorInFunction
+            << "The working history has no near list to write back ("
+            << nearXi_.size() << " pairs against " << nearJ.size() << ")"
+            << abort(FatalError);
     }
 
     store_.clear();
@@ -206,11 +225,11 @@ void Foam::contactHistory::flush
     forAll(pairRow, a)
     {
         const label idi = workingIds_[pairRow[a]];
-        for (label k = pairStart[a]; k < pairStart[a + 1]; ++k)
+        for (label k = nearStart[a]; k < nearStart[a + 1]; ++k)
         {
-            if (pairHasXi_[k] && pairXi_[k] != vector::zero)
+            if (nearHasXi_[k] && nearXi_[k] != vector::zero)
             {
-                set(idi, workingIds_[pairJ[k]], pairXi_[k]);
+                set(idi, workingIds_[nearJ[k]], nearXi_[k]);
             }
         }
     }

@@ -13,7 +13,6 @@ License
 #include "dictKeys.H"
 #include "polyMesh.H"
 #include "IOmanip.H"
-#include "Map.H"
 #include <algorithm>
 #include <chrono>
 #include <vector>
@@ -90,58 +89,13 @@ Foam::scalar Foam::demEngine::readSkin(const dictionary& dict) const
 }
 
 
-void Foam::demEngine::checkState(const demState& s) const
-{
-    scalar coarseN = -1;
-    label coarseId = -1;
-
-    forAll(s.N, i)
-    {
-        const scalar Ni = s.N[i];
-        if (!(Ni > 0))
-        {
-            FatalErrorInFunction
-                << "Parcel " << s.globalId[i] << " has N = " << Ni
-                << "; the coarsening factor must be > 0"
-                << exit(FatalError);
-        }
-        if (Ni > 1)
-        {
-            if (coarseN < 0)
-            {
-                coarseN = Ni;
-                coarseId = s.globalId[i];
-            }
-            else if (Ni != coarseN)
-            {
-                FatalErrorInFunction
-                    << "Parcels " << coarseId << " (N " << coarseN
-                    << ") and " << s.globalId[i] << " (N " << Ni << ") are "
-                    << "coarse-grained with different N > 1: the pair factor"
-                    << " max(N_i, N_j) cannot conserve momentum between "
-                    << "them (theory 2.4). Use one N for all parcels."
-                    << exit(FatalError);
-            }
-        }
-        if (s.typeId[i] < 0 || s.typeId[i] >= materials_.size())
-        {
-            FatalErrorInFunction
-                << "Parcel " << s.globalId[i] << " has type index "
-                << s.typeId[i] << "; types: " << materials_.names()
-                << exit(FatalError);
-        }
-    }
-}
-
-
 void Foam::demEngine::flushHistory()
 {
     if (!history_.workingValid())
     {
         return;
     }
-    pairs_.syncHistory(history_);
-    history_.flush(pairs_.rows(), pairs_.starts(), pairs_.partners());
+    history_.flush(pairs_.rows(), pairs_.nearStarts(), pairs_.nearPartners());
 }
 
 
@@ -154,7 +108,7 @@ void Foam::demEngine::rebuild(const demState& s)
     const scalar rMax = s.maxRadius();
 
     pairs_.build(s, models_, models_.maxRange(rMax));
-    history_.load(s.globalId, pairs_.rows(), pairs_.starts(), pairs_.partners());
+    history_.load(s.globalId);
     buildNear(s);
 
     timeNeighbour_ += wallClock() - t0;
@@ -237,77 +191,9 @@ void Foam::demEngine::totalForces(demState& s) const
 {
     forAll(s.x, p)
     {
-        s.f[p] = fContact_[p] + (s.N[p]*s.m[p])*g_ + s.fExt[p];
+        s.f[p] = totalForce(s, p);
         s.torque[p] = tContact_[p];
     }
-}
-
-
-bool Foam::demEngine::reuseCache(const demState& s)
-{
-    const label n = s.size();
-
-    if (!cacheValid_ || n != cacheX_.size())
-    {
-        return false;
-    }
-
-    // Rows in the same order (the usual case): compare directly
-    bool sameOrder = true;
-    forAll(cacheX_, p)
-    {
-        if (s.globalId[p] != cacheId_[p])
-        {
-            sameOrder = false;
-            break;
-        }
-    }
-
-    labelList from(identity(n));
-    if (!sameOrder)
-    {
-        // The cloud reordered its parcels: match them by globalId
-        Map<label> rowOf(2*n);
-        forAll(cacheId_, p)
-        {
-            rowOf.insert(cacheId_[p], p);
-        }
-        forAll(from, p)
-        {
-            const auto iter = rowOf.cfind(s.globalId[p]);
-            if (!iter.found())
-            {
-                return false;
-            }
-            from[p] = iter.val();
-        }
-    }
-
-    forAll(from, p)
-    {
-        const label q = from[p];
-        if
-        (
-            s.x[p] != cacheX_[q]
-         || s.v[p] != cacheV_[q]
-         || s.omega[p] != cacheOmega_[q]
-        )
-        {
-            return false;
-        }
-    }
-
-    if (!sameOrder)
-    {
-        const List<vector> f(fContact_), t(tContact_);
-        forAll(from, p)
-        {
-            fContact_[p] = f[from[p]];
-            tContact_[p] = t[from[p]];
-        }
-    }
-
-    return true;
 }
 
 
@@ -337,7 +223,6 @@ Foam::demEngine::demEngine(const dictionary& dict, const polyMesh* mesh)
     g_(Zero),
     time_(0),
     history_(),
-    cacheValid_(false),
     diag_(),
     timePair_(0),
     timeWall_(0),
@@ -406,7 +291,7 @@ void Foam::demEngine::evolve
     // Forces of the starting state: those of the last sub-step if the cloud
     // has not touched the state since (so splitting a run into evolve calls
     // changes nothing), else a re-evaluation that leaves the history as is
-    if (reuseCache(s))
+    if (cache_.reuse(s, fContact_, tContact_))
     {
         totalForces(s);
     }
@@ -460,7 +345,7 @@ void Foam::demEngine::evolve
         {
             if (ext)
             {
-                const vector f(fContact_[p] + (s.N[p]*s.m[p])*g_ + s.fExt[p]);
+                const vector f(totalForce(s, p));
                 s.f[p] = f;
                 return f;
             }
@@ -524,7 +409,7 @@ void Foam::demEngine::evolve
         for (label p = 0; p < n; ++p)
         {
             const scalar M = s.N[p]*s.m[p];
-            const vector f(fContact_[p] + M*g_ + s.fExt[p]);
+            const vector f(totalForce(s, p));
             const vector t(tContact_[p]);
             s.f[p] = f;
             s.torque[p] = t;
@@ -537,7 +422,7 @@ void Foam::demEngine::evolve
         }
         for (label p = n; p < s.size(); ++p)
         {
-            s.f[p] = fContact_[p] + (s.N[p]*s.m[p])*g_ + s.fExt[p];
+            s.f[p] = totalForce(s, p);
             s.torque[p] = tContact_[p];
         }
 
@@ -556,43 +441,7 @@ void Foam::demEngine::evolve
         }
     }
 
-    // Travel per step in radii: once per fluid step (the contacts' checks
-    // cannot see a parcel that jumps a wall or a partner between steps)
-    for (label p = 0; p < n; ++p)
-    {
-        const scalar travel = mag(s.v[p])*dt/s.r[p];
-        if (travel > diag_.stepMaxTravel)
-        {
-            diag_.stepMaxTravel = travel;
-            diag_.travelId = s.globalId[p];
-        }
-    }
-
-    // A non-finite state (only reachable with FOAM_SIGFPE off) must not be
-    // written: the energies of the last sub-step sum every owned velocity
-    if (!std::isfinite(diag_.kineticEnergy + diag_.rotationalEnergy))
-    {
-        for (label p = 0; p < n; ++p)
-        {
-            if
-            (
-                !std::isfinite(magSqr(s.x[p]))
-             || !std::isfinite(magSqr(s.v[p]))
-             || !std::isfinite(magSqr(s.omega[p]))
-            )
-            {
-                FatalErrorInFunction
-                    << "Parcel " << s.globalId[p] << " has a non-finite"
-                    << " state at DEM time " << time_ << ": position "
-                    << s.x[p] << ", velocity " << s.v[p] << ", spin "
-                    << s.omega[p] << nl << "    Stopped before it is"
-                    << " written; the last written time is intact. Look at"
-                    << " this parcel's contacts and forces (trace"
-                    << " { parcels (" << s.globalId[p] << "); })"
-                    << exit(FatalError);
-            }
-        }
-    }
+    checkEndState(s);
 
     flushHistory();
 
@@ -600,11 +449,7 @@ void Foam::demEngine::evolve
     s.tContact = tContact_;
     s.contactForcesValid = true;
 
-    cacheId_ = s.globalId;
-    cacheX_ = s.x;
-    cacheV_ = s.v;
-    cacheOmega_ = s.omega;
-    cacheValid_ = true;
+    cache_.store(s);
 }
 
 
@@ -619,7 +464,7 @@ void Foam::demEngine::evaluateForces(demState& s)
     checkState(s);
     evaluate(s, true);
     totalForces(s);
-    cacheValid_ = false;
+    cache_.invalidate();
 }
 
 
@@ -645,7 +490,7 @@ void Foam::demEngine::setHistory
     // reloaded from it at the next evaluation
     flushHistory();
     history_.invalidate();
-    cacheValid_ = false;
+    cache_.invalidate();
     pairs_.search().clear();
 
     history_.setHistory(globalId, partnerKeys, xi);

@@ -55,6 +55,7 @@ struct level
 Foam::neighbourSearch::neighbourSearch(const scalar skin)
 :
     skin_(skin),
+    nReleased_(0),
     nLevels_(0),
     nBuilds_(0),
     valid_(false)
@@ -116,6 +117,7 @@ void Foam::neighbourSearch::build
     x0_ = s.x;
     id0_ = s.globalId;
     pairs_.clear();
+    pairs_.reserve(nReleased_ + nReleased_/8);
     valid_ = true;
     ++nBuilds_;
     nLevels_ = 0;

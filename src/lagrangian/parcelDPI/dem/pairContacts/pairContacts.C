@@ -118,15 +118,8 @@ void Foam::pairContacts::build
             );
         }
     }
-}
 
-
-void Foam::pairContacts::syncHistory(contactHistory& h) const
-{
-    if (nearCurrent_)
-    {
-        h.syncPairs(nearK_);
-    }
+    search_.releasePairs();
 }
 
 
@@ -159,8 +152,13 @@ void Foam::pairContacts::buildNear
     // A near build about every 25 steps at the fastest row's speed (its
     // cost is about one sweep without forces), within 5 % and 100 % of the
     // Verlet skin
-    // The history of the last near list of this half list, to carry over
-    syncHistory(h);
+    // The listed pairs of the last near list of this half list, whose
+    // history carries over
+    labelList oldNearK;
+    if (nearCurrent_)
+    {
+        oldNearK.transfer(nearK_);
+    }
 
     const scalar skin = search_.skin();
     scalar v2Max = 0;
@@ -172,40 +170,53 @@ void Foam::pairContacts::buildNear
 
     nearX0_ = s.x;
 
+    // Which listed pairs are near, then the near list at its size: sized
+    // to the listed pairs (five to ten times as many in a packed bed) it
+    // would set the run's peak memory
     const label np = pairJ_.size();
-    nearStart_.setSize(pairRow_.size() + 1);
-    nearK_.setSize(np);
-    nearJ_.setSize(np);
-    nearCut2_.setSize(np);
-
+    List<bool> near(np);
     label m = 0;
     forAll(pairRow_, a)
     {
-        nearStart_[a] = m;
         const point& xi = s.x[pairRow_[a]];
         for (label k = pairStart_[a]; k < pairStart_[a + 1]; ++k)
         {
-            const label j = pairJ_[k];
             // Left out: at least sqrt(pairCut2) + nearSkin apart, so at
             // least sqrt(pairCut2) while no row moves more than half the
             // near skin (the margin covers round-off)
             const scalar reach =
                 (sqrt(pairCut2_[k]) + nearSkin_)*(1 + 1e-9);
-            if (magSqr(xi - s.x[j]) < sqr(reach))
+            near[k] = magSqr(xi - s.x[pairJ_[k]]) < sqr(reach);
+            m += near[k];
+        }
+    }
+
+    nearStart_.setSize(pairRow_.size() + 1);
+    nearK_.clear();
+    nearJ_.clear();
+    nearCut2_.clear();
+    nearK_.setSize(m);
+    nearJ_.setSize(m);
+    nearCut2_.setSize(m);
+
+    m = 0;
+    forAll(pairRow_, a)
+    {
+        nearStart_[a] = m;
+        for (label k = pairStart_[a]; k < pairStart_[a + 1]; ++k)
+        {
+            if (near[k])
             {
                 nearK_[m] = k;
-                nearJ_[m] = j;
+                nearJ_[m] = pairJ_[k];
                 nearCut2_[m] = pairCut2_[k];
                 ++m;
             }
         }
     }
     nearStart_[pairRow_.size()] = m;
-    nearK_.setSize(m);
-    nearJ_.setSize(m);
-    nearCut2_.setSize(m);
 
-    h.toNear(nearK_);
+    h.toNear(pairRow_, nearStart_, nearJ_, nearK_, oldNearK);
     nearCurrent_ = true;
 
     ++nNearBuilds_;
