@@ -1125,6 +1125,69 @@ void Foam::DPICloud<CloudType>::evolve()
 
 
 template<class CloudType>
+void Foam::DPICloud<CloudType>::fluidStep
+(
+    demStepper& stepper,
+    const scalar Dt,
+    const vector& g,
+    demObserver* obs
+)
+{
+    if (!coupling_->active())
+    {
+        stepper.evolve(state_, Dt, g, obs);
+        return;
+    }
+
+    coupling_->sample(*this, state_);
+
+    if (!coupling_->subStepForces())
+    {
+        coupling_->setHeldForces(state_, Dt);
+        stepper.evolve(state_, Dt, g, obs);
+        coupling_->finishHeld(*this, state_, Dt);
+        return;
+    }
+
+    List<vectorField> vecIn, vecOut;
+    List<scalarField> scaIn, scaOut;
+    coupling_->packStates(vecIn, scaIn);
+    subSteps
+    (
+        stepper, state_, coupling_->nRows(), vecIn, scaIn, vecOut, scaOut,
+        Dt, g, obs
+    );
+    coupling_->finishSubSteps(*this, state_, vecOut, scaOut);
+}
+
+
+template<class CloudType>
+void Foam::DPICloud<CloudType>::subSteps
+(
+    demStepper& stepper,
+    demState& s,
+    const label n,
+    const List<vectorField>& vecIn,
+    const List<scalarField>& scaIn,
+    List<vectorField>& vecOut,
+    List<scalarField>& scaOut,
+    const scalar Dt,
+    const vector& g,
+    demObserver* obs
+)
+{
+    // One engine call for the fluid step; the hook sets the forces before
+    // every sub-step
+    autoPtr<dpiSubStepForces> forces
+    (
+        coupling_->newSubStepForces(n, vecIn, scaIn, stepper.timeStep(), Dt)
+    );
+    stepper.evolve(s, Dt, g, obs, forces.get());
+    coupling_->subStepResults(forces(), s, n, vecOut, scaOut);
+}
+
+
+template<class CloudType>
 template<class TrackCloudType>
 void Foam::DPICloud<CloudType>::motion
 (
@@ -1179,7 +1242,7 @@ void Foam::DPICloud<CloudType>::motion
             List<scalarField> scaIn;
             coupling_->packStates(vecIn, scaIn);
             partition_->distribute(state_, vecIn, scaIn);
-            coupling_->subStepRows
+            subSteps
             (
                 engine_(), partition_->state(), partition_->state().owned(),
                 partition_->vectorColumns(), partition_->scalarColumns(),
@@ -1189,7 +1252,7 @@ void Foam::DPICloud<CloudType>::motion
         else
         {
             // held forces set here, the DEM sub-steps at the DEM owners
-            coupling_->evolve(*this, *partition_, state_, Dt, g, obs);
+            fluidStep(*partition_, Dt, g, obs);
         }
 
         // Labelled where the DEM rows are, then everything back to the
@@ -1227,8 +1290,8 @@ void Foam::DPICloud<CloudType>::motion
         }
 
         // DEM sub-steps with the fluid forces in state_.fExt, their
-        // reaction into UTrans/UCoeff; only engine_->evolve without forces
-        coupling_->evolve(*this, engine_(), state_, Dt, g, obs);
+        // reaction into UTrans/UCoeff
+        fluidStep(engine_(), Dt, g, obs);
 
         agglomerates_->update
         (

@@ -201,21 +201,22 @@ void Foam::dpiFluidCoupling::packStates
 }
 
 
-void Foam::dpiFluidCoupling::subStepRows
+void Foam::dpiFluidCoupling::setHeldForces(demState& s, const scalar Dt)
+{
+    advanceDispersion(s, Dt, 0);
+    setForces(s);
+}
+
+
+Foam::autoPtr<Foam::dpiSubStepForces> Foam::dpiFluidCoupling::newSubStepForces
 (
-    demStepper& stepper,
-    demState& s,
     const label n,
     const List<vectorField>& vecIn,
     const List<scalarField>& scaIn,
-    List<vectorField>& vecOut,
-    List<scalarField>& scaOut,
-    const scalar Dt,
-    const vector& g,
-    demObserver* obs
+    const scalar dt,
+    const scalar Dt
 ) const
 {
-    const scalar dt = stepper.timeStep();
     const label nSub = label(Dt/dt + 0.5);
     if (nSub < 1 || mag(Dt/dt - nSub) > 1e-6)
     {
@@ -225,21 +226,32 @@ void Foam::dpiFluidCoupling::subStepRows
             << exit(FatalError);
     }
 
-    // One engine call for the fluid step; the forces are set before each
-    // sub-step by the hook
-    dpiSubStepForces forces
+    return autoPtr<dpiSubStepForces>
     (
-        forces_, dispersion_.get(), n, vecIn, scaIn, dt, nSub,
-        refreshInterval_, mesh_.time().timeIndex()
+        new dpiSubStepForces
+        (
+            forces_, dispersion_.get(), n, vecIn, scaIn, dt, nSub,
+            refreshInterval_, mesh_.time().timeIndex()
+        )
     );
-    stepper.evolve(s, Dt, g, obs, &forces);
+}
 
+
+void Foam::dpiFluidCoupling::subStepResults
+(
+    const dpiSubStepForces& f,
+    demState& s,
+    const label n,
+    List<vectorField>& vecOut,
+    List<scalarField>& scaOut
+) const
+{
     // Out: the coupled impulse sum dt Fc and u* (vectors), sum dt Sp
     vecOut.setSize(2);
-    vecOut[0] = forces.impulse();
-    vecOut[1] = forces.uStar();
+    vecOut[0] = f.impulse();
+    vecOut[1] = f.uStar();
     scaOut.setSize(1);
-    scaOut[0] = forces.spImpulse();
+    scaOut[0] = f.spImpulse();
 
     for (label i = 0; i < n; ++i)
     {

@@ -371,53 +371,22 @@ void Foam::dpiFluidCoupling::finishSubSteps
 
 
 template<class CloudType>
-void Foam::dpiFluidCoupling::evolve
+void Foam::dpiFluidCoupling::finishHeld
 (
     CloudType& cloud,
-    demStepper& engine,
     demState& s,
-    const scalar Dt,
-    const vector& g,
-    demObserver* obs
+    const scalar Dt
 )
 {
-    gasMomentum_ = Zero;
-
-    if (!active())
+    vectorField impulse(nRows_);
+    scalarField spImp(nRows_);
+    for (label i = 0; i < nRows_; ++i)
     {
-        engine.evolve(s, Dt, g, obs);
-        return;
+        impulse[i] = Dt*fCoupled_[i];
+        spImp[i] = Dt*spCoupled_[i];
     }
-
-    sample(cloud, s);
-
-    if (update_ == updateMode::held)
-    {
-        advanceDispersion(s, Dt, 0);
-        setForces(s);
-        engine.evolve(s, Dt, g, obs);
-        vectorField impulse(nRows_);
-        scalarField spImp(nRows_);
-        for (label i = 0; i < nRows_; ++i)
-        {
-            impulse[i] = Dt*fCoupled_[i];
-            spImp[i] = Dt*spCoupled_[i];
-        }
-        addSources(cloud, impulse, spImp);
-        endFluidStep(cloud, s);
-    }
-    else
-    {
-        // The per-row loop (the same arithmetic wherever the rows run)
-        List<vectorField> vecIn, vecOut;
-        List<scalarField> scaIn, scaOut;
-        packStates(vecIn, scaIn);
-        subStepRows
-        (
-            engine, s, nRows_, vecIn, scaIn, vecOut, scaOut, Dt, g, obs
-        );
-        finishSubSteps(cloud, s, vecOut, scaOut);
-    }
+    addSources(cloud, impulse, spImp);
+    endFluidStep(cloud, s);
 }
 
 

@@ -70,22 +70,6 @@ const Foam::dictionary& holder
 
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
 
-Foam::scalar Foam::cohesionContactModels::vdwGuParcel::sphereForce
-(
-    const scalar A,
-    const scalar ri,
-    const scalar rj,
-    const scalar s
-)
-{
-    // Hamaker's classical form of theory 3.1 (no cancellation at small s)
-    const scalar q = s*(2*(ri + rj) + s);
-    const scalar rirj = ri*rj;
-
-    return (32.0/3.0)*A*pow3(rirj)*(ri + rj + s)/(sqr(q)*sqr(q + 4*rirj));
-}
-
-
 Foam::scalar Foam::cohesionContactModels::vdwGuParcel::continuityJump
 (
     const pairCoeffs& p,
@@ -456,44 +440,5 @@ Foam::cohesionContactModels::vdwGuParcel::vdwGuParcel(const dictionary& dict)
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::scalar Foam::cohesionContactModels::vdwGuParcel::force
-(
-    const demContact& c
-) const
-{
-    if (c.wall && !wallCohesion_)
-    {
-        return 0;
-    }
-
-    const pairCoeffs& p = coeffs(c.typei, c.typej);
-    if (!p.active())
-    {
-        return 0;
-    }
-
-    const scalar s = -c.delta;
-
-    // Theory 3.3: in contact and up to sMins the softened plateau, then the
-    // real law of the shifted gap up to smax = R* (walls r_i), then nothing
-    if (s < p.sMins)
-    {
-        return
-            c.wall
-          ? wallForce(p.AS, c.Rstar, p.sMin)
-          : sphereForce(p.AS, c.ri, c.rj, p.sMin);
-    }
-    if (s >= c.Rstar)
-    {
-        return 0;
-    }
-
-    return
-        c.wall
-      ? wallForce(p.A, c.Rstar, s - p.s0)
-      : sphereForce(p.A, c.ri, c.rj, s - p.s0);
-}
-
 
 // ************************************************************************* //
