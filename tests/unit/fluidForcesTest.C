@@ -41,7 +41,7 @@ namespace
         const scalar N
     )
     {
-        const dpiFluidForce::forceSuSp F = m.force(f, v, d, N);
+        const dpiFluidForce::forceSuSp F = m.parcelForce(f, v, d, N);
         return F.Su + F.Sp*(f.U + f.Uturb - v);
     }
 }

@@ -76,7 +76,7 @@ void Foam::dpiFluidForce::sum
 
     forAll(forces, k)
     {
-        const forceSuSp f = forces[k].force(fl, v, d, N);
+        const forceSuSp f = forces[k].parcelForce(fl, v, d, N);
 
         const vector Fk(f.Su + f.Sp*(fl.U + fl.Uturb - v));
         F += Fk;
@@ -110,7 +110,7 @@ void Foam::dpiFluidForce::linearise
 
     forAll(forces, k)
     {
-        const forceSuSp f = forces[k].force(fl, v, d, N);
+        const forceSuSp f = forces[k].parcelForce(fl, v, d, N);
 
         Su += f.Su;
         Sp += f.Sp;

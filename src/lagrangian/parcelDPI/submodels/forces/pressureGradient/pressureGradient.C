@@ -41,14 +41,13 @@ Foam::dpiFluidForces::pressureGradient::force
 (
     const fluidState& fluid,
     const vector& v,
-    const scalar d,
-    const scalar N
+    const scalar d
 ) const
 {
     using constant::mathematical::pi;
 
     forceSuSp F;
-    F.Su = -(N*pi/6*pow3(d))*fluid.gradp;
+    F.Su = -(pi/6*pow3(d))*fluid.gradp;
     return F;
 }
 

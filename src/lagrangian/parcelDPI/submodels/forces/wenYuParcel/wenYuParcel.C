@@ -78,14 +78,13 @@ Foam::dpiFluidForce::forceSuSp Foam::dpiFluidForces::wenYuParcel::force
 (
     const fluidState& fluid,
     const vector& v,
-    const scalar d,
-    const scalar N
+    const scalar d
 ) const
 {
     const vector Ur(fluid.U + fluid.Uturb - v);
 
     forceSuSp F;
-    F.Sp = N*primarySp(d, fluid.alpha, fluid.rho, fluid.nu, mag(Ur));
+    F.Sp = primarySp(d, fluid.alpha, fluid.rho, fluid.nu, mag(Ur));
     return F;
 }
 
