@@ -263,16 +263,7 @@ void Foam::demEngine::evolve
     demSubStepForces* ext
 )
 {
-    const scalar ratio = Dt/timeStep_;
-    const label nSub = label(ratio + 0.5);
-
-    if (nSub < 0 || mag(ratio - nSub) > 1e-6)
-    {
-        FatalErrorInFunction
-            << "The fluid time step " << Dt << " s is not an integer "
-            << "multiple of the DEM timeStep " << timeStep_ << " s (ratio "
-            << ratio << ")" << exit(FatalError);
-    }
+    const label nSub = nSubSteps(Dt);
     if (nSub == 0)
     {
         return;

@@ -1180,7 +1180,10 @@ void Foam::DPICloud<CloudType>::subSteps
     // every sub-step
     autoPtr<dpiSubStepForces> forces
     (
-        coupling_->newSubStepForces(n, vecIn, scaIn, stepper.timeStep(), Dt)
+        coupling_->newSubStepForces
+        (
+            n, vecIn, scaIn, stepper.timeStep(), stepper.nSubSteps(Dt)
+        )
     );
     stepper.evolve(s, Dt, g, obs, forces.get());
     coupling_->subStepResults(forces(), s, n, vecOut, scaOut);

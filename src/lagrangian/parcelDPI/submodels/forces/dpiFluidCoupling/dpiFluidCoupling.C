@@ -214,18 +214,9 @@ Foam::autoPtr<Foam::dpiSubStepForces> Foam::dpiFluidCoupling::newSubStepForces
     const List<vectorField>& vecIn,
     const List<scalarField>& scaIn,
     const scalar dt,
-    const scalar Dt
+    const label nSub
 ) const
 {
-    const label nSub = label(Dt/dt + 0.5);
-    if (nSub < 1 || mag(Dt/dt - nSub) > 1e-6)
-    {
-        FatalErrorInFunction
-            << "The fluid time step " << Dt << " s is not an integer "
-            << "multiple of the DEM timeStep " << dt << " s"
-            << exit(FatalError);
-    }
-
     return autoPtr<dpiSubStepForces>
     (
         new dpiSubStepForces
