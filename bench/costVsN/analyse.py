@@ -17,7 +17,12 @@ One row per N (best of its runs, lowest engine time):
   us_per_parcel_step  engine wall time per parcel-step [us]
   pair_share, wall_share, neighbour_share, integrate_share [%]
   contacts_per_parcel  (2 pair + wall contacts)/parcels at the end
-  attached_fraction API primaries attached to carriers at the end
+  attached_fraction API primaries attached to carriers at the end of the
+                    run (its own window: larger N run longer, see run)
+  attached_common   the same at the end of the shortest run's window (the
+                    same simulated time for every N: the fraction to
+                    compare across N)
+  t_common_us       that time [us]
   rss_MB            peak memory
   runs              every run's engine s/us
 """
@@ -43,6 +48,10 @@ def one(d):
     m = re.findall(r"API primaries: attached to carriers (\d+), detached "
                    r"(\d+)", text)
     att = int(m[-1][0])/(int(m[-1][0]) + int(m[-1][1])) if m else float("nan")
+    # The same fraction at the end of every fluid step: (time [us], fraction)
+    h = benchLogs.apiHistory(os.path.join(d, "log.dpiFoam"))
+    series = [(t*1e6, a_/(a_ + d_)) for t, a_, d_ in
+              zip(h["t"], h["attached"], h["detached"])]
     N = int(re.search(r"N(\d+)-r\d+$", d).group(1))
     steps = log["steps"]
     every = steps//log["nFluid"]
@@ -60,7 +69,13 @@ def one(d):
         neighbour_share=100*log["tNeighbour"]/log["tEngine"],
         integrate_share=100*log["tIntegrate"]/log["tEngine"],
         contacts_per_parcel=(2*dg["nPair"] + dg["nWall"])/n,
-        attached_fraction=att, rss_MB=tm["maxRssKB"]/1024.0)
+        attached_fraction=att, series=series, rss_MB=tm["maxRssKB"]/1024.0)
+
+
+def attachedAt(series, tUs):
+    """The attached fraction at the last fluid step at or before tUs."""
+    before = [f for t, f in series if t <= tUs*(1 + 1e-9)]
+    return before[-1] if before else float("nan")
 
 
 def main():
@@ -79,6 +94,11 @@ def main():
         b["loop_cpu_s_per_us"] = min(r["loop_cpu_s_per_us"] for r in g)
         b["runs"] = " ".join("%.4g" % r["engine_s_per_us"] for r in g)
         rows.append(b)
+    # The common window: the shortest run's simulated time
+    tCommon = min(r["steps"] for r in rows)*DT*1e6
+    for r in rows:
+        r["t_common_us"] = tCommon
+        r["attached_common"] = attachedAt(r["series"], tCommon)
     carriers = None
     base = next((r for r in rows if r["N"] == 1), rows[0])
     for r in rows:
@@ -102,7 +122,8 @@ def main():
             "loop_cpu_s_per_us", "elapsed_s", "speedup", "speedup_engine",
             "us_per_parcel_step", "pair_share", "wall_share",
             "neighbour_share", "integrate_share", "contacts_per_parcel",
-            "attached_fraction", "rss_MB", "runs"]
+            "attached_fraction", "attached_common", "t_common_us",
+            "rss_MB", "runs"]
     with open(a.csv, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=cols)
         w.writeheader()
@@ -114,16 +135,19 @@ def main():
              "DEM engine, wall s per us | speed-up vs N = 1 (loop CPU / "
              "engine wall) "
              "| us per parcel-step | pair share | contacts per parcel | "
-             "API attached at the end | peak RSS |",
-             "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+             "simulated time [us] | API attached at the end | "
+             "API attached at %.3g us (every N) | peak RSS |" % tCommon,
+             "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+             "---:|"]
     for r in rows:
         lines.append("| %d | %d (%s) | %.3g | %.3g | **%.1f** / %.1f | %.3f | "
-                     "%.0f %% | %.2f | %.3f | %.0f MB |" % (
+                     "%.0f %% | %.2f | %.3g | %.3f | %.3f | %.0f MB |" % (
                          r["N"], r["parcels"], r["api_parcels"],
                          r["loop_cpu_s_per_us"], r["engine_s_per_us"],
                          r["speedup"], r["speedup_engine"],
                          r["us_per_parcel_step"], r["pair_share"],
-                         r["contacts_per_parcel"], r["attached_fraction"],
+                         r["contacts_per_parcel"], r["steps"]*DT*1e6,
+                         r["attached_fraction"], r["attached_common"],
                          r["rss_MB"]))
     with open(a.md, "w") as f:
         f.write("\n".join(lines) + "\n")
