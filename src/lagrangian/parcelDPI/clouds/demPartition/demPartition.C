@@ -327,14 +327,18 @@ void Foam::demPartition::distribute
         partition(meshRows);
     }
 
+    // The rows that stay on this processor (most of them when the regions
+    // and the mesh decomposition agree) are copied below, not streamed: a
+    // stream to oneself would hold them twice more, serialised and read back
+    const label myProc = Pstream::myProcNo();
     PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
     forAll(rowsTo, proci)
     {
-        const labelList rows(rowsTo[proci]);
-        if (rows.empty())
+        if (proci == myProc || rowsTo[proci].empty())
         {
             continue;
         }
+        const labelList rows(rowsTo[proci]);
         UOPstream os(proci, pBufs);
         os  << rows;
         meshRows.writeRows(os, rows);
@@ -362,10 +366,64 @@ void Foam::demPartition::distribute
     List<DynamicList<vector>> vecCols(vecIn.size());
     List<DynamicList<scalar>> scaCols(scaIn.size());
 
+    // A DEM row takes its mesh row's forces and running contacts (its
+    // previous DEM owner wrote them to the mesh owner's copy)
+    const auto adopt = [&]
+    (
+        const label row,
+        const label proci,
+        const label meshRow,
+        const vector& fExt,
+        const vector& fContact,
+        const vector& tContact,
+        const labelList& rowKeys,
+        const List<vector>& rowXi
+    )
+    {
+        dem_.fExt[row] = fExt;
+        dem_.fContact[row] = fContact;
+        dem_.tContact[row] = tContact;
+        fromProc.append(proci);
+        fromRow.append(meshRow);
+        engine_.setHistory(dem_.globalId[row], rowKeys, rowXi);
+    };
+
     // In processor order, each in its mesh order: a deterministic order
     // (the engine's results do not depend on it anyway)
     forAll(recvSizes, proci)
     {
+        if (proci == myProc)
+        {
+            for (const label i : rowsTo[proci])
+            {
+                dem_.append
+                (
+                    meshRows.x[i], meshRows.v[i], meshRows.omega[i],
+                    meshRows.r[i], meshRows.m[i], meshRows.N[i],
+                    meshRows.typeId[i], meshRows.globalId[i]
+                );
+                adopt
+                (
+                    dem_.size() - 1, proci, i, meshRows.fExt[i], meshRows.fContact[i],
+                    meshRows.tContact[i], keys[i], xi[i]
+                );
+            }
+            forAll(vecCols, c)
+            {
+                for (const label i : rowsTo[proci])
+                {
+                    vecCols[c].append(vecIn[c][i]);
+                }
+            }
+            forAll(scaCols, c)
+            {
+                for (const label i : rowsTo[proci])
+                {
+                    scaCols[c].append(scaIn[c][i]);
+                }
+            }
+            continue;
+        }
         if (!recvSizes[proci])
         {
             continue;
@@ -390,16 +448,11 @@ void Foam::demPartition::distribute
 
         forAll(rows, k)
         {
-            const label row = start + k;
-            dem_.fExt[row] = fExt[k];
-            dem_.fContact[row] = fContact[k];
-            dem_.tContact[row] = tContact[k];
-            fromProc.append(proci);
-            fromRow.append(rows[k]);
-
-            // The parcel's running contacts, from its mesh owner's copy
-            // (its previous DEM owner wrote them there)
-            engine_.setHistory(dem_.globalId[row], rowKeys[k], rowXi[k]);
+            adopt
+            (
+                start + k, proci, rows[k], fExt[k], fContact[k],
+                tContact[k], rowKeys[k], rowXi[k]
+            );
         }
     }
     fromProc_.transfer(fromProc);
@@ -446,16 +499,18 @@ void Foam::demPartition::collect
         rowsTo[fromProc_[k]].append(k);
     }
 
+    // Rows whose mesh owner is this processor go straight back (below)
+    const label myProc = Pstream::myProcNo();
     PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
     DynamicList<label> rowKeys;
     DynamicList<vector> rowXi;
     forAll(rowsTo, proci)
     {
-        const labelList rows(rowsTo[proci]);
-        if (rows.empty())
+        if (proci == myProc || rowsTo[proci].empty())
         {
             continue;
         }
+        const labelList rows(rowsTo[proci]);
         List<labelList> allKeys(rows.size());
         List<List<vector>> allXi(rows.size());
         forAll(rows, j)
@@ -501,7 +556,30 @@ void Foam::demPartition::collect
     {
         c.setSize(nMesh);
     }
-    label nBack = 0;
+    label nBack = rowsTo[myProc].size();
+    for (const label k : rowsTo[myProc])
+    {
+        const label i = fromRow_[k];
+        meshRows.x[i] = dem_.x[k];
+        meshRows.v[i] = dem_.v[k];
+        meshRows.omega[i] = dem_.omega[k];
+        meshRows.fContact[i] = dem_.fContact[k];
+        meshRows.tContact[i] = dem_.tContact[k];
+        agglomerateIds[i] = agglomerateIds_[k];
+        rowKeys.clear();
+        rowXi.clear();
+        engine_.history(dem_.globalId[k], rowKeys, rowXi);
+        keys[i] = rowKeys;
+        xi[i] = rowXi;
+        forAll(vecBack, c)
+        {
+            vecBack[c][i] = vecOut[c][k];
+        }
+        forAll(scaBack, c)
+        {
+            scaBack[c][i] = scaOut[c][k];
+        }
+    }
     forAll(recvSizes, proci)
     {
         if (!recvSizes[proci])
