@@ -50,6 +50,10 @@ TEST(singleParticles, injectsTheListOnceAtSOI)
     ASSERT_EQ(out.size(), 2);
     m->inject(3e-5, 4e-5, out);
     EXPECT_EQ(out.size(), 2) << "injected twice";
+    // Once injected the list is released (it is the whole list on every
+    // processor): asked again for a window holding SOI, it has nothing left
+    m->inject(2e-5, 3e-5, out);
+    EXPECT_EQ(out.size(), 2) << "the list was kept after its injection";
 
     EXPECT_EQ(out[0].type, "API");
     EXPECT_EQ(out[0].position, point(1, 2, 3));

@@ -580,7 +580,7 @@ void Foam::dpiInjectionModels::regionPacking::inject
     const scalar t0,
     const scalar t1,
     DynamicList<injectionSpec>& particles
-) const
+)
 {
     if (SOI_ >= t0 && SOI_ < t1)
     {

@@ -81,11 +81,12 @@ void Foam::dpiInjectionModels::singleParticles::inject
     const scalar t0,
     const scalar t1,
     DynamicList<injectionSpec>& particles
-) const
+)
 {
     if (SOI_ >= t0 && SOI_ < t1)
     {
         particles.append(particles_);
+        particles_.clear();
     }
 }
 
