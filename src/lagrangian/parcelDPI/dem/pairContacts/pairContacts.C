@@ -14,6 +14,8 @@ License
 Foam::pairContacts::pairContacts(const scalar skin)
 :
     search_(skin),
+    models_(nullptr),
+    range_(0),
     nearSkin_(0),
     nearCurrent_(false),
     nNearBuilds_(0)
@@ -98,26 +100,8 @@ void Foam::pairContacts::build
         );
     }
 
-    // The cut-off of the global range (as before per-pair ranges) is kept
-    // where it is the smaller, so that a pair at the edge of the range is
-    // decided exactly as it was; the per-pair one has a margin far above
-    // round-off, so it drops only pairs that are certainly out of range
-    pairCut2_.setSize(np);
-    forAll(pairRow_, a)
-    {
-        const label i = pairRow_[a];
-        for (label k = pairStart_[a]; k < pairStart_[a + 1]; ++k)
-        {
-            const label j = pairJ_[k];
-            const scalar rSum = s.r[i] + s.r[j];
-            const scalar pairRange = models.maxPairRange(s.r[i], s.r[j]);
-            pairCut2_[k] = min
-            (
-                sqr(rSum + range),
-                sqr((rSum + pairRange)*(1 + 1e-9))
-            );
-        }
-    }
+    models_ = &models;
+    range_ = range;
 
     search_.releasePairs();
 }
@@ -178,14 +162,15 @@ void Foam::pairContacts::buildNear
     label m = 0;
     forAll(pairRow_, a)
     {
-        const point& xi = s.x[pairRow_[a]];
+        const label i = pairRow_[a];
+        const point& xi = s.x[i];
         for (label k = pairStart_[a]; k < pairStart_[a + 1]; ++k)
         {
-            // Left out: at least sqrt(pairCut2) + nearSkin apart, so at
-            // least sqrt(pairCut2) while no row moves more than half the
-            // near skin (the margin covers round-off)
+            // Left out: at least sqrt(cut2) + nearSkin apart, so at least
+            // sqrt(cut2) while no row moves more than half the near skin
+            // (the margin covers round-off)
             const scalar reach =
-                (sqrt(pairCut2_[k]) + nearSkin_)*(1 + 1e-9);
+                (sqrt(cut2(s, i, pairJ_[k])) + nearSkin_)*(1 + 1e-9);
             near[k] = magSqr(xi - s.x[pairJ_[k]]) < sqr(reach);
             m += near[k];
         }
@@ -209,7 +194,7 @@ void Foam::pairContacts::buildNear
             {
                 nearK_[m] = k;
                 nearJ_[m] = pairJ_[k];
-                nearCut2_[m] = pairCut2_[k];
+                nearCut2_[m] = cut2(s, pairRow_[a], pairJ_[k]);
                 ++m;
             }
         }
