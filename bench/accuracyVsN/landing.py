@@ -19,20 +19,9 @@ import sys
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "tutorials", "scripts"))
 sys.path.insert(0, os.path.join(HERE, "..", "common"))
-from foamLagrangian import read_field  # noqa: E402
 import benchLogs  # noqa: E402
-
-
-def lastTime(case):
-    times = [t for t in os.listdir(case)
-             if os.path.isdir(os.path.join(case, t, "lagrangian"))]
-    return os.path.join(case, max(times, key=float), "lagrangian", "dpiCloud")
-
-
-def field(d, name, dtype=float):
-    return np.asarray(read_field(os.path.join(d, name)), dtype=dtype)
+from polar import lastTime, field  # noqa: E402
 
 
 def one(case):
