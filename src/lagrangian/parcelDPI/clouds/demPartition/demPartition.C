@@ -404,8 +404,8 @@ void Foam::demPartition::distribute
                 );
                 adopt
                 (
-                    dem_.size() - 1, proci, i, meshRows.fExt[i], meshRows.fContact[i],
-                    meshRows.tContact[i], keys[i], xi[i]
+                    dem_.size() - 1, proci, i, meshRows.fExt[i],
+                    meshRows.fContact[i], meshRows.tContact[i], keys[i], xi[i]
                 );
             }
             forAll(vecCols, c)
@@ -556,16 +556,37 @@ void Foam::demPartition::collect
     {
         c.setSize(nMesh);
     }
+    // What a mesh row takes back from its DEM row, whether it stayed on
+    // this processor or came back in a stream (its contacts and extra
+    // columns apart)
+    const auto giveBack = [&]
+    (
+        const label i,
+        const point& x,
+        const vector& v,
+        const vector& omega,
+        const vector& fContact,
+        const vector& tContact,
+        const label aggId
+    )
+    {
+        meshRows.x[i] = x;
+        meshRows.v[i] = v;
+        meshRows.omega[i] = omega;
+        meshRows.fContact[i] = fContact;
+        meshRows.tContact[i] = tContact;
+        agglomerateIds[i] = aggId;
+    };
+
     label nBack = rowsTo[myProc].size();
     for (const label k : rowsTo[myProc])
     {
         const label i = fromRow_[k];
-        meshRows.x[i] = dem_.x[k];
-        meshRows.v[i] = dem_.v[k];
-        meshRows.omega[i] = dem_.omega[k];
-        meshRows.fContact[i] = dem_.fContact[k];
-        meshRows.tContact[i] = dem_.tContact[k];
-        agglomerateIds[i] = agglomerateIds_[k];
+        giveBack
+        (
+            i, dem_.x[k], dem_.v[k], dem_.omega[k], dem_.fContact[k],
+            dem_.tContact[k], agglomerateIds_[k]
+        );
         rowKeys.clear();
         rowXi.clear();
         engine_.history(dem_.globalId[k], rowKeys, rowXi);
@@ -615,12 +636,10 @@ void Foam::demPartition::collect
         forAll(rows, j)
         {
             const label i = rows[j];
-            meshRows.x[i] = x[j];
-            meshRows.v[i] = v[j];
-            meshRows.omega[i] = omega[j];
-            meshRows.fContact[i] = fContact[j];
-            meshRows.tContact[i] = tContact[j];
-            agglomerateIds[i] = aggIds[j];
+            giveBack
+            (
+                i, x[j], v[j], omega[j], fContact[j], tContact[j], aggIds[j]
+            );
             keys[i].transfer(allKeys[j]);
             xi[i].transfer(allXi[j]);
         }
