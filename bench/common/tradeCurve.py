@@ -1,7 +1,8 @@
-"""Accuracy against the coarsening factor N, shared by bench/accuracyVsN and
-bench/inhalerVsN: a measure per run summarised per N (mean, seed-to-seed
-spread, error against N = 1, speed-up), the CSV writer and the trade-curve
-axes (error against speed-up).
+"""Accuracy against the coarsening factor N, shared by bench/accuracyVsN,
+bench/inhalerVsN and bench/powderVsN: a measure per run summarised per N
+(mean, seed-to-seed spread, error against N = 1, speed-up), the time to half
+detachment of a run, the CSV writer and the trade-curve axes (error against
+speed-up).
 
 A run is a dict with at least "N" and the measured keys; the CPU key gives
 the speed-up (mean CPU time of the N = 1 runs / mean CPU time of the N
@@ -11,6 +12,17 @@ import csv
 import math
 
 import numpy as np
+
+
+def halfTime(t, detached):
+    """t50: the time at which the detached fraction first reaches one half,
+    linear between the samples around it; NaN when it never does or
+    already has at the first sample (no sample before it)."""
+    j = np.argmax(detached >= 0.5) if detached[-1] >= 0.5 else -1
+    if j > 0:
+        return t[j - 1] + (0.5 - detached[j - 1]) \
+            / (detached[j] - detached[j - 1])*(t[j] - t[j - 1])
+    return float("nan")
 
 
 def summarise(runs, key, cpu="cpu_total"):

@@ -61,14 +61,7 @@ def run(d, t1, ramp):
     # API primaries out of the outlet: the counter minus the carriers gone
     ei = inh["escaped"] - (carriers - inh["carriers"])
     k = min(np.searchsorted(ti, t1 + ramp - 1e-9), len(ti) - 1)
-    det = 1 - ai/primaries
-    j = np.argmax(det >= 0.5) if det[-1] >= 0.5 else -1
-    if j > 0:
-        # linear between the samples around one half
-        t50 = ti[j - 1] + (0.5 - det[j - 1])/(det[j] - det[j - 1]) \
-            * (ti[j] - ti[j - 1])
-    else:
-        t50 = float("nan")
+    t50 = tradeCurve.halfTime(ti, 1 - ai/primaries)
     fAcc, fMax = fpf(d)
     gt = benchLogs.gnuTime(os.path.join(d, "time.txt"))
     return dict(N=N, seed=seed, carriers=carriers, parcels=parcels,

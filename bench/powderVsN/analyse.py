@@ -8,8 +8,8 @@ results.csv, one row per run (cases/N<N>-seed<seed>):
   N, seed, parcels_per_carrier (API parcels per carrier), t_end_us (the
   window), attached_end (API primaries attached to carriers at the end /
   all API primaries), attached_mid (the same at half the window), t50_us
-  (first time the attached fraction is 0.5 or less, linear between fluid
-  steps; NaN when not reached), cpu (the last ExecutionTime [s]).
+  (first time half the API are detached, linear between fluid steps; NaN
+  when not reached: tradeCurve.halfTime), cpu (the last ExecutionTime [s]).
 summary.csv, one row per N and measure (attached_end, attached_mid,
   t50_us): N, measure, runs, parcels_per_carrier, mean, std (seed to seed,
   ddof 1), sem, error (mean - mean at N = 1), rel_error, within_spread
@@ -34,17 +34,6 @@ MEASURES = (("attached_end", "API attached at the end of the window"),
             ("t50_us", "time to half detachment t50 [us]"))
 
 
-def crossing(t, f, level=0.5):
-    """First time f(t) <= level, linear between samples (NaN if never)."""
-    for k in range(len(f)):
-        if f[k] <= level:
-            if k == 0:
-                return t[0]
-            return t[k - 1] + (f[k - 1] - level)/(f[k - 1] - f[k]) \
-                * (t[k] - t[k - 1])
-    return float("nan")
-
-
 def run(d):
     m = re.search(r"N(\d+)-seed(\d+)$", d)
     N, seed = int(m.group(1)), int(m.group(2))
@@ -60,7 +49,8 @@ def run(d):
     nApi = int(re.findall(r"Primaries of type API = (\d+)", txt)[-1])
     return dict(N=N, seed=seed, parcels_per_carrier=nApi/N/nCarriers,
                 t_end_us=t[-1], attached_end=f[-1], attached_mid=f[mid],
-                t_mid_us=t[mid], t50_us=crossing(t, f), cpu=h["cpu"],
+                t_mid_us=t[mid], t50_us=tradeCurve.halfTime(t, 1 - f),
+                cpu=h["cpu"],
                 series=(t, f))
 
 
