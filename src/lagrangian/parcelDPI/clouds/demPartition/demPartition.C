@@ -265,8 +265,8 @@ bool Foam::demPartition::selected(const dictionary& demDict)
 
 void Foam::demPartition::setInputs
 (
-    const List<labelList>& keys,
-    const List<List<vector>>& xi,
+    List<labelList>& keys,
+    List<List<vector>>& xi,
     const scalar reach,
     const word& checkWhen
 )
@@ -292,8 +292,8 @@ void Foam::demPartition::distribute
 
     const label nProcs = Pstream::nProcs();
     const label nMesh = meshRows.owned();
-    const List<labelList>& keys = *keys_;
-    const List<List<vector>>& xi = *xi_;
+    List<labelList>& keys = *keys_;
+    List<List<vector>>& xi = *xi_;
 
     // The DEM owner of every row; too uneven over all processors (the
     // parcels moved or left since the last cut): cut again now, so no
@@ -327,52 +327,49 @@ void Foam::demPartition::distribute
         partition(meshRows);
     }
 
-    // The rows that stay on this processor (most of them when the regions
-    // and the mesh decomposition agree) are copied below, not streamed: a
-    // stream to oneself would hold them twice more, serialised and read back
+    // Where the DEM rows come from: per source processor a block, in
+    // processor order, each in its mesh order (a deterministic order; the
+    // engine's results do not depend on it anyway)
     const label myProc = Pstream::myProcNo();
-    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+    labelList nSend(nProcs, 0);
     forAll(rowsTo, proci)
     {
-        if (proci == myProc || rowsTo[proci].empty())
-        {
-            continue;
-        }
-        const labelList rows(rowsTo[proci]);
-        UOPstream os(proci, pBufs);
-        os  << rows;
-        meshRows.writeRows(os, rows);
-        os  << List<vector>(UIndirectList<vector>(meshRows.fExt, rows))
-            << List<vector>(UIndirectList<vector>(meshRows.fContact, rows))
-            << List<vector>(UIndirectList<vector>(meshRows.tContact, rows))
-            << List<labelList>(UIndirectList<labelList>(keys, rows))
-            << List<List<vector>>(UIndirectList<List<vector>>(xi, rows));
-        for (const vectorField& c : vecIn)
-        {
-            os << vectorField(UIndirectList<vector>(c, rows));
-        }
-        for (const scalarField& c : scaIn)
-        {
-            os << scalarField(UIndirectList<scalar>(c, rows));
-        }
+        nSend[proci] = (proci == myProc) ? 0 : rowsTo[proci].size();
     }
-    labelList recvSizes;
-    pBufs.finishedSends(recvSizes);
+    labelList nRecv(nProcs, 0);
+    UPstream::allToAll(nSend, nRecv);
+    nRecv[myProc] = rowsTo[myProc].size();
+    labelList offset(nProcs + 1, 0);
+    forAll(nRecv, proci)
+    {
+        offset[proci + 1] = offset[proci] + nRecv[proci];
+    }
+    const label nOwned = offset[nProcs];
 
     dem_.clear();
+    dem_.resize(nOwned);
     dem_.contactForcesValid = meshRows.contactForcesValid;
-    DynamicList<label> fromProc;
-    DynamicList<label> fromRow;
-    List<DynamicList<vector>> vecCols(vecIn.size());
-    List<DynamicList<scalar>> scaCols(scaIn.size());
+    fromProc_.setSize(nOwned);
+    fromRow_.setSize(nOwned);
+    vecCols_.setSize(vecIn.size());
+    for (vectorField& col : vecCols_)
+    {
+        col.setSize(nOwned);
+    }
+    scaCols_.setSize(scaIn.size());
+    for (scalarField& col : scaCols_)
+    {
+        col.setSize(nOwned);
+    }
 
-    // A DEM row takes its mesh row's forces and running contacts (its
-    // previous DEM owner wrote them to the mesh owner's copy)
+    // DEM row `row` takes mesh row i of processor proci: its forces,
+    // running contacts (its previous DEM owner wrote them to the mesh
+    // owner's copy) and extra columns
     const auto adopt = [&]
     (
         const label row,
         const label proci,
-        const label meshRow,
+        const label i,
         const vector& fExt,
         const vector& fContact,
         const vector& tContact,
@@ -383,90 +380,127 @@ void Foam::demPartition::distribute
         dem_.fExt[row] = fExt;
         dem_.fContact[row] = fContact;
         dem_.tContact[row] = tContact;
-        fromProc.append(proci);
-        fromRow.append(meshRow);
+        fromProc_[row] = proci;
+        fromRow_[row] = i;
         engine_.setHistory(dem_.globalId[row], rowKeys, rowXi);
     };
 
-    // In processor order, each in its mesh order: a deterministic order
-    // (the engine's results do not depend on it anyway)
-    forAll(recvSizes, proci)
+    // The rows that stay on this processor (most of them when the regions
+    // and the mesh decomposition agree) are copied, not streamed: a stream
+    // to oneself would hold them twice more, serialised and read back
+    forAll(rowsTo[myProc], k)
     {
-        if (proci == myProc)
+        const label i = rowsTo[myProc][k];
+        const label row = offset[myProc] + k;
+        dem_.set
+        (
+            row, meshRows.x[i], meshRows.v[i], meshRows.omega[i],
+            meshRows.r[i], meshRows.m[i], meshRows.N[i], meshRows.typeId[i],
+            meshRows.globalId[i]
+        );
+        adopt
+        (
+            row, myProc, i, meshRows.fExt[i], meshRows.fContact[i],
+            meshRows.tContact[i], keys[i], xi[i]
+        );
+        forAll(vecCols_, col)
         {
-            for (const label i : rowsTo[proci])
+            vecCols_[col][row] = vecIn[col][i];
+        }
+        forAll(scaCols_, col)
+        {
+            scaCols_[col][row] = scaIn[col][i];
+        }
+        keys[i].clear();
+        xi[i].clear();
+    }
+
+    // The others in rounds of at most maxRowsPerMessage rows per processor
+    // pair, so the hand-over's buffers stay small however many rows change
+    // processor (all of them after a re-partition)
+    const label nMax = returnReduce(max(nSend), maxOp<label>());
+    for (label start = 0; start < nMax; start += maxRowsPerMessage)
+    {
+        PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+        forAll(rowsTo, proci)
+        {
+            if (proci == myProc || start >= rowsTo[proci].size())
             {
-                dem_.append
-                (
-                    meshRows.x[i], meshRows.v[i], meshRows.omega[i],
-                    meshRows.r[i], meshRows.m[i], meshRows.N[i],
-                    meshRows.typeId[i], meshRows.globalId[i]
-                );
+                continue;
+            }
+            // Streamed straight from the rows (an indirect list is written
+            // as the list of its elements), and a sent row's contacts
+            // dropped here at once: the stream is their copy
+            const SubList<label> rows
+            (
+                rowsTo[proci],
+                min(maxRowsPerMessage, rowsTo[proci].size() - start),
+                start
+            );
+            UOPstream os(proci, pBufs);
+            os  << rows;
+            meshRows.writeRows(os, rows);
+            os  << UIndirectList<vector>(meshRows.fExt, rows)
+                << UIndirectList<vector>(meshRows.fContact, rows)
+                << UIndirectList<vector>(meshRows.tContact, rows)
+                << UIndirectList<labelList>(keys, rows)
+                << UIndirectList<List<vector>>(xi, rows);
+            for (const vectorField& col : vecIn)
+            {
+                os << UIndirectList<vector>(col, rows);
+            }
+            for (const scalarField& col : scaIn)
+            {
+                os << UIndirectList<scalar>(col, rows);
+            }
+            for (const label i : rows)
+            {
+                keys[i].clear();
+                xi[i].clear();
+            }
+        }
+        labelList recvSizes;
+        pBufs.finishedSends(recvSizes);
+
+        forAll(recvSizes, proci)
+        {
+            if (!recvSizes[proci])
+            {
+                continue;
+            }
+            UIPstream is(proci, pBufs);
+            const labelList rows(is);
+            const label row0 = offset[proci] + start;
+            dem_.readRows(is, row0);
+            const List<vector> fExt(is);
+            const List<vector> fContact(is);
+            const List<vector> tContact(is);
+            const List<labelList> rowKeys(is);
+            const List<List<vector>> rowXi(is);
+            forAll(vecCols_, col)
+            {
+                const vectorField vals(is);
+                SubList<vector>(vecCols_[col], vals.size(), row0) = vals;
+            }
+            forAll(scaCols_, col)
+            {
+                const scalarField vals(is);
+                SubList<scalar>(scaCols_[col], vals.size(), row0) = vals;
+            }
+            forAll(rows, k)
+            {
                 adopt
                 (
-                    dem_.size() - 1, proci, i, meshRows.fExt[i],
-                    meshRows.fContact[i], meshRows.tContact[i], keys[i], xi[i]
+                    row0 + k, proci, rows[k], fExt[k], fContact[k],
+                    tContact[k], rowKeys[k], rowXi[k]
                 );
             }
-            forAll(vecCols, c)
-            {
-                for (const label i : rowsTo[proci])
-                {
-                    vecCols[c].append(vecIn[c][i]);
-                }
-            }
-            forAll(scaCols, c)
-            {
-                for (const label i : rowsTo[proci])
-                {
-                    scaCols[c].append(scaIn[c][i]);
-                }
-            }
-            continue;
         }
-        if (!recvSizes[proci])
-        {
-            continue;
-        }
-        UIPstream is(proci, pBufs);
-        const labelList rows(is);
-        const label start = dem_.size();
-        dem_.readRows(is);
-        const List<vector> fExt(is);
-        const List<vector> fContact(is);
-        const List<vector> tContact(is);
-        const List<labelList> rowKeys(is);
-        const List<List<vector>> rowXi(is);
-        forAll(vecCols, c)
-        {
-            vecCols[c].append(vectorField(is));
-        }
-        forAll(scaCols, c)
-        {
-            scaCols[c].append(scalarField(is));
-        }
+    }
 
-        forAll(rows, k)
-        {
-            adopt
-            (
-                start + k, proci, rows[k], fExt[k], fContact[k],
-                tContact[k], rowKeys[k], rowXi[k]
-            );
-        }
-    }
-    fromProc_.transfer(fromProc);
-    fromRow_.transfer(fromRow);
-    vecCols_.setSize(vecCols.size());
-    forAll(vecCols, c)
-    {
-        vecCols_[c].transfer(vecCols[c]);
-    }
-    scaCols_.setSize(scaCols.size());
-    forAll(scaCols, c)
-    {
-        scaCols_[c].transfer(scaCols[c]);
-    }
+    // The histories are the engine's now (adopt); collect hands them back
+    keys.clear();
+    xi.clear();
 
     halo_.build(dem_, reach_, &engine_);
 
@@ -499,66 +533,24 @@ void Foam::demPartition::collect
         rowsTo[fromProc_[k]].append(k);
     }
 
-    // Rows whose mesh owner is this processor go straight back (below)
     const label myProc = Pstream::myProcNo();
-    PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
-    DynamicList<label> rowKeys;
-    DynamicList<vector> rowXi;
-    forAll(rowsTo, proci)
-    {
-        if (proci == myProc || rowsTo[proci].empty())
-        {
-            continue;
-        }
-        const labelList rows(rowsTo[proci]);
-        List<labelList> allKeys(rows.size());
-        List<List<vector>> allXi(rows.size());
-        forAll(rows, j)
-        {
-            rowKeys.clear();
-            rowXi.clear();
-            engine_.history(dem_.globalId[rows[j]], rowKeys, rowXi);
-            allKeys[j] = rowKeys;
-            allXi[j] = rowXi;
-        }
-        UOPstream os(proci, pBufs);
-        os  << labelList(UIndirectList<label>(fromRow_, rows))
-            << List<point>(UIndirectList<point>(dem_.x, rows))
-            << List<vector>(UIndirectList<vector>(dem_.v, rows))
-            << List<vector>(UIndirectList<vector>(dem_.omega, rows))
-            << List<vector>(UIndirectList<vector>(dem_.fContact, rows))
-            << List<vector>(UIndirectList<vector>(dem_.tContact, rows))
-            << labelList(UIndirectList<label>(agglomerateIds_, rows))
-            << allKeys << allXi;
-        for (const vectorField& c : vecOut)
-        {
-            os << vectorField(UIndirectList<vector>(c, rows));
-        }
-        for (const scalarField& c : scaOut)
-        {
-            os << scalarField(UIndirectList<scalar>(c, rows));
-        }
-    }
-    labelList recvSizes;
-    pBufs.finishedSends(recvSizes);
-
     const label nMesh = meshRows.owned();
     agglomerateIds.setSize(nMesh);
     keys.setSize(nMesh);
     xi.setSize(nMesh);
     vecBack.setSize(vecOut.size());
-    for (vectorField& c : vecBack)
+    for (vectorField& col : vecBack)
     {
-        c.setSize(nMesh);
+        col.setSize(nMesh);
     }
     scaBack.setSize(scaOut.size());
-    for (scalarField& c : scaBack)
+    for (scalarField& col : scaBack)
     {
-        c.setSize(nMesh);
+        col.setSize(nMesh);
     }
+
     // What a mesh row takes back from its DEM row, whether it stayed on
-    // this processor or came back in a stream (its contacts and extra
-    // columns apart)
+    // this processor or came back in a stream (its extra columns apart)
     const auto giveBack = [&]
     (
         const label i,
@@ -567,7 +559,9 @@ void Foam::demPartition::collect
         const vector& omega,
         const vector& fContact,
         const vector& tContact,
-        const label aggId
+        const label aggId,
+        labelList& rowKeys,
+        List<vector>& rowXi
     )
     {
         meshRows.x[i] = x;
@@ -576,74 +570,140 @@ void Foam::demPartition::collect
         meshRows.fContact[i] = fContact;
         meshRows.tContact[i] = tContact;
         agglomerateIds[i] = aggId;
+        keys[i].transfer(rowKeys);
+        xi[i].transfer(rowXi);
     };
 
+    // The contacts leave the engine's store as they are handed back, so
+    // the store shrinks as the mesh side's lists grow
+    DynamicList<label> takenKeys;
+    DynamicList<vector> takenXi;
+    const auto take = [&](const label k, labelList& rowKeys, List<vector>& rowXi)
+    {
+        takenKeys.clear();
+        takenXi.clear();
+        engine_.takeHistory(dem_.globalId[k], takenKeys, takenXi);
+        rowKeys = takenKeys;
+        rowXi = takenXi;
+    };
+
+    // Rows whose mesh owner is this processor go straight back
     label nBack = rowsTo[myProc].size();
     for (const label k : rowsTo[myProc])
     {
         const label i = fromRow_[k];
+        labelList rowKeys;
+        List<vector> rowXi;
+        take(k, rowKeys, rowXi);
         giveBack
         (
             i, dem_.x[k], dem_.v[k], dem_.omega[k], dem_.fContact[k],
-            dem_.tContact[k], agglomerateIds_[k]
+            dem_.tContact[k], agglomerateIds_[k], rowKeys, rowXi
         );
-        rowKeys.clear();
-        rowXi.clear();
-        engine_.history(dem_.globalId[k], rowKeys, rowXi);
-        keys[i] = rowKeys;
-        xi[i] = rowXi;
-        forAll(vecBack, c)
+        forAll(vecBack, col)
         {
-            vecBack[c][i] = vecOut[c][k];
+            vecBack[col][i] = vecOut[col][k];
         }
-        forAll(scaBack, c)
+        forAll(scaBack, col)
         {
-            scaBack[c][i] = scaOut[c][k];
+            scaBack[col][i] = scaOut[col][k];
         }
     }
-    forAll(recvSizes, proci)
+
+    // The others in rounds, as distribute sends them
+    label nMax = 0;
+    forAll(rowsTo, proci)
     {
-        if (!recvSizes[proci])
+        if (proci != myProc)
         {
-            continue;
+            nMax = max(nMax, rowsTo[proci].size());
         }
-        UIPstream is(proci, pBufs);
-        const labelList rows(is);
-        const List<point> x(is);
-        const List<vector> v(is);
-        const List<vector> omega(is);
-        const List<vector> fContact(is);
-        const List<vector> tContact(is);
-        const labelList aggIds(is);
-        List<labelList> allKeys(is);
-        List<List<vector>> allXi(is);
-        forAll(vecBack, c)
+    }
+    reduce(nMax, maxOp<label>());
+    for (label start = 0; start < nMax; start += maxRowsPerMessage)
+    {
+        PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+        forAll(rowsTo, proci)
         {
-            const vectorField vals(is);
-            forAll(rows, j)
+            if (proci == myProc || start >= rowsTo[proci].size())
             {
-                vecBack[c][rows[j]] = vals[j];
+                continue;
             }
-        }
-        forAll(scaBack, c)
-        {
-            const scalarField vals(is);
-            forAll(rows, j)
-            {
-                scaBack[c][rows[j]] = vals[j];
-            }
-        }
-        forAll(rows, j)
-        {
-            const label i = rows[j];
-            giveBack
+            const SubList<label> rows
             (
-                i, x[j], v[j], omega[j], fContact[j], tContact[j], aggIds[j]
+                rowsTo[proci],
+                min(maxRowsPerMessage, rowsTo[proci].size() - start),
+                start
             );
-            keys[i].transfer(allKeys[j]);
-            xi[i].transfer(allXi[j]);
+            List<labelList> allKeys(rows.size());
+            List<List<vector>> allXi(rows.size());
+            forAll(rows, j)
+            {
+                take(rows[j], allKeys[j], allXi[j]);
+            }
+            UOPstream os(proci, pBufs);
+            os  << UIndirectList<label>(fromRow_, rows)
+                << UIndirectList<point>(dem_.x, rows)
+                << UIndirectList<vector>(dem_.v, rows)
+                << UIndirectList<vector>(dem_.omega, rows)
+                << UIndirectList<vector>(dem_.fContact, rows)
+                << UIndirectList<vector>(dem_.tContact, rows)
+                << UIndirectList<label>(agglomerateIds_, rows)
+                << allKeys << allXi;
+            for (const vectorField& col : vecOut)
+            {
+                os << UIndirectList<vector>(col, rows);
+            }
+            for (const scalarField& col : scaOut)
+            {
+                os << UIndirectList<scalar>(col, rows);
+            }
         }
-        nBack += rows.size();
+        labelList recvSizes;
+        pBufs.finishedSends(recvSizes);
+
+        forAll(recvSizes, proci)
+        {
+            if (!recvSizes[proci])
+            {
+                continue;
+            }
+            UIPstream is(proci, pBufs);
+            const labelList rows(is);
+            const List<point> x(is);
+            const List<vector> v(is);
+            const List<vector> omega(is);
+            const List<vector> fContact(is);
+            const List<vector> tContact(is);
+            const labelList aggIds(is);
+            List<labelList> allKeys(is);
+            List<List<vector>> allXi(is);
+            forAll(vecBack, col)
+            {
+                const vectorField vals(is);
+                forAll(rows, j)
+                {
+                    vecBack[col][rows[j]] = vals[j];
+                }
+            }
+            forAll(scaBack, col)
+            {
+                const scalarField vals(is);
+                forAll(rows, j)
+                {
+                    scaBack[col][rows[j]] = vals[j];
+                }
+            }
+            forAll(rows, j)
+            {
+                giveBack
+                (
+                    rows[j], x[j], v[j], omega[j], fContact[j], tContact[j],
+                    aggIds[j], allKeys[j], allXi[j]
+                );
+            }
+            nBack += rows.size();
+        }
     }
 
     if (nBack != nMesh)
@@ -652,6 +712,10 @@ void Foam::demPartition::collect
             << nMesh << " parcels on this processor went to the DEM, "
             << nBack << " came back" << exit(FatalError);
     }
+
+    // The histories are the mesh side's until the next distribute gives
+    // them to the engine again
+    engine_.releaseHistory();
 }
 
 

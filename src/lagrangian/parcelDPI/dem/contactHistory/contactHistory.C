@@ -41,6 +41,14 @@ void Foam::contactHistory::set
 }
 
 
+void Foam::contactHistory::erase(const label globalId)
+{
+    const std::uint64_t lo = key(globalId, 0);
+    const std::uint64_t hi = lo | 0xFFFFFFFFu;
+    store_.erase(store_.lower_bound(lo), store_.upper_bound(hi));
+}
+
+
 void Foam::contactHistory::history
 (
     const label globalId,
@@ -64,6 +72,18 @@ void Foam::contactHistory::history
 }
 
 
+void Foam::contactHistory::take
+(
+    const label globalId,
+    DynamicList<label>& partnerKeys,
+    DynamicList<vector>& xi
+)
+{
+    history(globalId, partnerKeys, xi);
+    erase(globalId);
+}
+
+
 void Foam::contactHistory::setHistory
 (
     const label globalId,
@@ -79,9 +99,7 @@ void Foam::contactHistory::setHistory
             << exit(FatalError);
     }
 
-    const std::uint64_t lo = key(globalId, 0);
-    const std::uint64_t hi = lo | 0xFFFFFFFFu;
-    store_.erase(store_.lower_bound(lo), store_.upper_bound(hi));
+    erase(globalId);
 
     forAll(xi, i)
     {

@@ -477,14 +477,38 @@ void Foam::demEngine::setHistory
     const UList<vector>& xi
 )
 {
+    editHistory();
+    history_.setHistory(globalId, partnerKeys, xi);
+}
+
+
+void Foam::demEngine::takeHistory
+(
+    const label globalId,
+    DynamicList<label>& partnerKeys,
+    DynamicList<vector>& xi
+)
+{
+    editHistory();
+    history_.take(globalId, partnerKeys, xi);
+}
+
+
+void Foam::demEngine::releaseHistory()
+{
+    editHistory();
+    history_.clear();
+}
+
+
+void Foam::demEngine::editHistory()
+{
     // Bring the store up to date before editing it; the working arrays are
     // reloaded from it at the next evaluation
     flushHistory();
     history_.invalidate();
     cache_.invalidate();
     pairs_.search().clear();
-
-    history_.setHistory(globalId, partnerKeys, xi);
 }
 
 

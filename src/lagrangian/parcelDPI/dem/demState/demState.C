@@ -13,23 +13,101 @@ License
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+namespace Foam
+{
+    // The column operations of demState (one per member function)
+    struct demStateClear
+    {
+        template<class T>
+        void operator()(DynamicList<T>& c) const
+        {
+            c.clear();
+        }
+    };
+
+    struct demStateGrow
+    {
+        template<class T>
+        void operator()(DynamicList<T>& c) const
+        {
+            c.append(T());
+        }
+    };
+
+    struct demStateResize
+    {
+        label n;
+
+        template<class T>
+        void operator()(DynamicList<T>& c) const
+        {
+            c.setSize(n);
+        }
+    };
+
+    struct demStateReserve
+    {
+        label n;
+
+        template<class T>
+        void operator()(DynamicList<T>& c) const
+        {
+            if (c.capacity() < n)
+            {
+                c.setCapacity(n);
+            }
+        }
+    };
+}
+
+
 void Foam::demState::clear()
 {
-    x.clear();
-    v.clear();
-    omega.clear();
-    r.clear();
-    m.clear();
-    N.clear();
-    typeId.clear();
-    globalId.clear();
-    fExt.clear();
-    f.clear();
-    torque.clear();
-    fContact.clear();
-    tContact.clear();
+    forEachColumn(demStateClear());
     contactForcesValid = false;
     nOwned = -1;
+}
+
+
+void Foam::demState::reserve(const label n)
+{
+    forEachColumn(demStateReserve{n});
+}
+
+
+void Foam::demState::resize(const label n)
+{
+    reserve(n);
+    forEachColumn(demStateResize{n});
+}
+
+
+void Foam::demState::set
+(
+    const label row,
+    const point& xi,
+    const vector& vi,
+    const vector& omegai,
+    const scalar ri,
+    const scalar mi,
+    const scalar Ni,
+    const label typei,
+    const label globalIdi
+)
+{
+    x[row] = xi;
+    v[row] = vi;
+    omega[row] = omegai;
+    r[row] = ri;
+    m[row] = mi;
+    N[row] = Ni;
+    typeId[row] = typei;
+    globalId[row] = globalIdi;
+    fExt[row] = Zero;
+    f[row] = Zero;
+    torque[row] = Zero;
+    fContact[row] = Zero;
+    tContact[row] = Zero;
 }
 
 
@@ -45,37 +123,29 @@ Foam::label Foam::demState::append
     const label globalIdi
 )
 {
-    x.append(xi);
-    v.append(vi);
-    omega.append(omegai);
-    r.append(ri);
-    m.append(mi);
-    N.append(Ni);
-    typeId.append(typei);
-    globalId.append(globalIdi);
-    fExt.append(Zero);
-    f.append(Zero);
-    torque.append(Zero);
-    fContact.append(Zero);
-    tContact.append(Zero);
-    return x.size() - 1;
+    const label row = size();
+    forEachColumn(demStateGrow());
+    set(row, xi, vi, omegai, ri, mi, Ni, typei, globalIdi);
+    return row;
 }
 
 
 void Foam::demState::writeRows(Ostream& os, const labelUList& rows) const
 {
-    os  << List<point>(UIndirectList<point>(x, rows))
-        << List<vector>(UIndirectList<vector>(v, rows))
-        << List<vector>(UIndirectList<vector>(omega, rows))
-        << List<scalar>(UIndirectList<scalar>(r, rows))
-        << List<scalar>(UIndirectList<scalar>(m, rows))
-        << List<scalar>(UIndirectList<scalar>(N, rows))
-        << List<label>(UIndirectList<label>(typeId, rows))
-        << List<label>(UIndirectList<label>(globalId, rows));
+    // An indirect list is written as the list of its elements (read back
+    // as a List), without a copy
+    os  << UIndirectList<point>(x, rows)
+        << UIndirectList<vector>(v, rows)
+        << UIndirectList<vector>(omega, rows)
+        << UIndirectList<scalar>(r, rows)
+        << UIndirectList<scalar>(m, rows)
+        << UIndirectList<scalar>(N, rows)
+        << UIndirectList<label>(typeId, rows)
+        << UIndirectList<label>(globalId, rows);
 }
 
 
-Foam::label Foam::demState::readRows(Istream& is)
+Foam::label Foam::demState::readRows(Istream& is, const label start)
 {
     const List<point> xs(is);
     const List<vector> vs(is);
@@ -85,12 +155,18 @@ Foam::label Foam::demState::readRows(Istream& is)
     const List<scalar> Ns(is);
     const labelList typeIds(is);
     const labelList globalIds(is);
+
+    const label row0 = (start < 0) ? size() : start;
+    if (row0 + xs.size() > size())
+    {
+        resize(row0 + xs.size());
+    }
     forAll(xs, k)
     {
-        append
+        set
         (
-            xs[k], vs[k], omegas[k], rs[k], ms[k], Ns[k], typeIds[k],
-            globalIds[k]
+            row0 + k, xs[k], vs[k], omegas[k], rs[k], ms[k], Ns[k],
+            typeIds[k], globalIds[k]
         );
     }
     return xs.size();

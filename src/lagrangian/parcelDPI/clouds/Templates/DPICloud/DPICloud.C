@@ -650,6 +650,7 @@ template<class CloudType>
 void Foam::DPICloud<CloudType>::copyToState(const bool contactForcesValid)
 {
     state_.clear();
+    state_.reserve(this->size());
 
     for (const parcelType& p : *this)
     {
@@ -670,16 +671,18 @@ void Foam::DPICloud<CloudType>::copyToState(const bool contactForcesValid)
     state_.contactForcesValid = contactForcesValid;
 
     // With the DEM's own partition the histories travel with the rows
-    // every fluid step, from the parcels' copies
+    // every fluid step: the parcels' lists are moved, not copied, to the
+    // partition (which gives them to the engine), and come back in
+    // copyFromState, so a history is held once while the DEM runs
     if (partition_.valid())
     {
         rowKeys_.setSize(state_.size());
         rowXi_.setSize(state_.size());
         label i = 0;
-        for (const parcelType& p : *this)
+        for (parcelType& p : *this)
         {
-            rowKeys_[i] = p.contactKeys();
-            rowXi_[i] = p.contactXi();
+            rowKeys_[i].transfer(p.contactKeys());
+            rowXi_[i].transfer(p.contactXi());
             ++i;
         }
         return;
