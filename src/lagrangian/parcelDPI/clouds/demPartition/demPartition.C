@@ -13,6 +13,11 @@ License
 #include "ListOps.H"
 #include "SortableList.H"
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const Foam::label Foam::demPartition::maxRowsPerMessage;
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::label Foam::demPartition::bisect
@@ -263,6 +268,63 @@ bool Foam::demPartition::selected(const dictionary& demDict)
 }
 
 
+template<class Send, class Receive>
+void Foam::demPartition::inRounds
+(
+    const UList<DynamicList<label>>& rowsTo,
+    const Send& send,
+    const Receive& receive
+) const
+{
+    // Every processor takes part in every round (PstreamBuffers exchange
+    // sizes collectively), as many as the longest list anywhere needs
+    const label myProc = Pstream::myProcNo();
+    label nMax = 0;
+    forAll(rowsTo, proci)
+    {
+        if (proci != myProc)
+        {
+            nMax = max(nMax, rowsTo[proci].size());
+        }
+    }
+    reduce(nMax, maxOp<label>());
+
+    for (label start = 0; start < nMax; start += maxRowsPerMessage)
+    {
+        PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
+        forAll(rowsTo, proci)
+        {
+            if (proci == myProc || start >= rowsTo[proci].size())
+            {
+                continue;
+            }
+            UOPstream os(proci, pBufs);
+            send
+            (
+                SubList<label>
+                (
+                    rowsTo[proci],
+                    min(maxRowsPerMessage, rowsTo[proci].size() - start),
+                    start
+                ),
+                os
+            );
+        }
+        labelList recvSizes;
+        pBufs.finishedSends(recvSizes);
+
+        forAll(recvSizes, proci)
+        {
+            if (recvSizes[proci])
+            {
+                UIPstream is(proci, pBufs);
+                receive(proci, start, is);
+            }
+        }
+    }
+}
+
+
 void Foam::demPartition::setInputs
 (
     List<labelList>& keys,
@@ -415,29 +477,14 @@ void Foam::demPartition::distribute
         xi[i].clear();
     }
 
-    // The others in rounds of at most maxRowsPerMessage rows per processor
-    // pair, so the hand-over's buffers stay small however many rows change
-    // processor (all of them after a re-partition)
-    const label nMax = returnReduce(max(nSend), maxOp<label>());
-    for (label start = 0; start < nMax; start += maxRowsPerMessage)
-    {
-        PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
-        forAll(rowsTo, proci)
+    // The others in rounds (inRounds), streamed straight from the rows (an
+    // indirect list is written as the list of its elements); a sent row's
+    // contacts are dropped at once: the stream is their copy
+    inRounds
+    (
+        rowsTo,
+        [&](const labelUList& rows, UOPstream& os)
         {
-            if (proci == myProc || start >= rowsTo[proci].size())
-            {
-                continue;
-            }
-            // Streamed straight from the rows (an indirect list is written
-            // as the list of its elements), and a sent row's contacts
-            // dropped here at once: the stream is their copy
-            const SubList<label> rows
-            (
-                rowsTo[proci],
-                min(maxRowsPerMessage, rowsTo[proci].size() - start),
-                start
-            );
-            UOPstream os(proci, pBufs);
             os  << rows;
             meshRows.writeRows(os, rows);
             os  << UIndirectList<vector>(meshRows.fExt, rows)
@@ -458,17 +505,9 @@ void Foam::demPartition::distribute
                 keys[i].clear();
                 xi[i].clear();
             }
-        }
-        labelList recvSizes;
-        pBufs.finishedSends(recvSizes);
-
-        forAll(recvSizes, proci)
+        },
+        [&](const label proci, const label start, UIPstream& is)
         {
-            if (!recvSizes[proci])
-            {
-                continue;
-            }
-            UIPstream is(proci, pBufs);
             const labelList rows(is);
             const label row0 = offset[proci] + start;
             dem_.readRows(is, row0);
@@ -496,7 +535,7 @@ void Foam::demPartition::distribute
                 );
             }
         }
-    }
+    );
 
     // The histories are the engine's now (adopt); collect hands them back
     keys.clear();
@@ -611,37 +650,17 @@ void Foam::demPartition::collect
     }
 
     // The others in rounds, as distribute sends them
-    label nMax = 0;
-    forAll(rowsTo, proci)
-    {
-        if (proci != myProc)
+    inRounds
+    (
+        rowsTo,
+        [&](const labelUList& rows, UOPstream& os)
         {
-            nMax = max(nMax, rowsTo[proci].size());
-        }
-    }
-    reduce(nMax, maxOp<label>());
-    for (label start = 0; start < nMax; start += maxRowsPerMessage)
-    {
-        PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
-        forAll(rowsTo, proci)
-        {
-            if (proci == myProc || start >= rowsTo[proci].size())
-            {
-                continue;
-            }
-            const SubList<label> rows
-            (
-                rowsTo[proci],
-                min(maxRowsPerMessage, rowsTo[proci].size() - start),
-                start
-            );
             List<labelList> allKeys(rows.size());
             List<List<vector>> allXi(rows.size());
             forAll(rows, j)
             {
                 take(rows[j], allKeys[j], allXi[j]);
             }
-            UOPstream os(proci, pBufs);
             os  << UIndirectList<label>(fromRow_, rows)
                 << UIndirectList<point>(dem_.x, rows)
                 << UIndirectList<vector>(dem_.v, rows)
@@ -658,17 +677,9 @@ void Foam::demPartition::collect
             {
                 os << UIndirectList<scalar>(col, rows);
             }
-        }
-        labelList recvSizes;
-        pBufs.finishedSends(recvSizes);
-
-        forAll(recvSizes, proci)
+        },
+        [&](const label, const label, UIPstream& is)
         {
-            if (!recvSizes[proci])
-            {
-                continue;
-            }
-            UIPstream is(proci, pBufs);
             const labelList rows(is);
             const List<point> x(is);
             const List<vector> v(is);
@@ -704,7 +715,7 @@ void Foam::demPartition::collect
             }
             nBack += rows.size();
         }
-    }
+    );
 
     if (nBack != nMesh)
     {
