@@ -9,7 +9,6 @@ License
 #include "neighbourSearch.H"
 #include "SortableList.H"
 #include <algorithm>
-#include <unordered_map>
 #include <vector>
 #include <cstdint>
 
@@ -33,18 +32,15 @@ inline std::uint64_t cellKey
       | std::uint64_t(k);
 }
 
-//- One size level: its cell size and occupied cells
+//- One size level: its cell size and its rows by cell
 struct level
 {
     Foam::scalar h = 0;
     Foam::scalar rMax = 0;
 
-    // (cell key, row), sorted by key
+    // (cell key, row), sorted: a cell's rows are contiguous, and so are
+    // the cells of one (i, j) column, k being the key's lowest bits
     std::vector<std::pair<std::uint64_t, Foam::label>> entries;
-
-    // cell key -> [begin, end) in entries
-    std::unordered_map<std::uint64_t, std::pair<Foam::label, Foam::label>>
-        cells;
 };
 
 } // End anonymous namespace
@@ -190,18 +186,6 @@ void Foam::neighbourSearch::build
     for (level& lev : levels)
     {
         std::sort(lev.entries.begin(), lev.entries.end());
-        const label m = label(lev.entries.size());
-        label b = 0;
-        while (b < m)
-        {
-            label e = b + 1;
-            while (e < m && lev.entries[e].first == lev.entries[b].first)
-            {
-                ++e;
-            }
-            lev.cells[lev.entries[b].first] = {b, e};
-            b = e;
-        }
     }
 
     // Each particle looks into its own level (larger rows only, so each
@@ -218,47 +202,49 @@ void Foam::neighbourSearch::build
             label ijk[3];
             cellOf(xp, lev.h, ijk);
 
+            // The three cells k - 1 .. k + 1 of each (i, j) column are one
+            // run of the sorted entries: one search per column (9, not 27
+            // hash lookups, and no map to allocate per build); cells and
+            // rows are visited in the same order as cell by cell
+            const label kLo = max(ijk[2] - 1, label(0));
+            const label kHi = ijk[2] + 1;
             for (label i = ijk[0] - 1; i <= ijk[0] + 1; ++i)
             {
                 if (i < 0) continue;
                 for (label j = ijk[1] - 1; j <= ijk[1] + 1; ++j)
                 {
                     if (j < 0) continue;
-                    for (label k = ijk[2] - 1; k <= ijk[2] + 1; ++k)
-                    {
-                        if (k < 0) continue;
 
-                        const auto iter = lev.cells.find(cellKey(i, j, k));
-                        if (iter == lev.cells.end())
+                    const std::uint64_t hi = cellKey(i, j, kHi);
+                    for
+                    (
+                        auto e = std::lower_bound
+                        (
+                            lev.entries.begin(),
+                            lev.entries.end(),
+                            std::make_pair(cellKey(i, j, kLo), label(-1))
+                        );
+                        e != lev.entries.end() && e->first <= hi;
+                        ++e
+                    )
+                    {
+                        const label q = e->second;
+                        if (L == lp && q <= p)
                         {
                             continue;
                         }
 
-                        for
-                        (
-                            label e = iter->second.first;
-                            e < iter->second.second;
-                            ++e
-                        )
+                        const scalar cut =
+                            rp + s.r[q] + range(rp, s.r[q]) + skin_;
+                        if (magSqr(xp - s.x[q]) < sqr(cut))
                         {
-                            const label q = lev.entries[e].second;
-                            if (L == lp && q <= p)
+                            if (s.globalId[p] < s.globalId[q])
                             {
-                                continue;
+                                pairs_.append(labelPair(p, q));
                             }
-
-                            const scalar cut =
-                                rp + s.r[q] + range(rp, s.r[q]) + skin_;
-                            if (magSqr(xp - s.x[q]) < sqr(cut))
+                            else
                             {
-                                if (s.globalId[p] < s.globalId[q])
-                                {
-                                    pairs_.append(labelPair(p, q));
-                                }
-                                else
-                                {
-                                    pairs_.append(labelPair(q, p));
-                                }
+                                pairs_.append(labelPair(q, p));
                             }
                         }
                     }
