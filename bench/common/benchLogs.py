@@ -50,7 +50,7 @@ def dpiFoamLog(path):
     out["engineRate"] = float(m.group(2))
     m = re.search(r"pair " + FLOAT + r" s \(" + FLOAT + r" %\), wall "
                   + FLOAT + r" s \(" + FLOAT + r" %\), neighbour " + FLOAT
-                  + r" s \(" + FLOAT + r" %, (\d+) builds(?:, \d+ near builds, \d+ of \d+ listed pairs near)?\),"
+                  + r" s \(" + FLOAT + r" %, (\d+) builds(?:, \d+ near builds, \d+ of \d+ listed pairs near(?: on average)?)?\),"
                   + r" integrate "
                   + FLOAT + r" s \(" + FLOAT + r" %\)", text)
     out["tPair"], out["tWall"], out["tNeighbour"], out["tIntegrate"] = (

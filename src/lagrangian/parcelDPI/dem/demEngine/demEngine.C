@@ -529,8 +529,10 @@ void Foam::demEngine::writePerformance(Ostream& os) const
         << "wall " << timeWall_ << " s (" << pct(timeWall_) << " %), "
         << "neighbour " << timeNeighbour_ << " s (" << pct(timeNeighbour_)
         << " %, " << pairs_.search().nBuilds() << " builds, "
-        << pairs_.nNearBuilds() << " near builds, " << pairs_.nNear()
-        << " of " << pairs_.nListed() << " listed pairs near), "
+        << pairs_.nNearBuilds() << " near builds, "
+        << label(pairs_.meanNear() + 0.5) << " of "
+        << label(pairs_.meanListed() + 0.5)
+        << " listed pairs near on average), "
         << "integrate " << timeIntegrate_ << " s ("
         << pct(timeIntegrate_) << " %)";
     if (halo_)

@@ -18,7 +18,9 @@ Foam::pairContacts::pairContacts(const scalar skin)
     range_(0),
     nearSkin_(0),
     nearCurrent_(false),
-    nNearBuilds_(0)
+    nNearBuilds_(0),
+    sumListed_(0),
+    sumNear_(0)
 {}
 
 
@@ -205,6 +207,8 @@ void Foam::pairContacts::buildNear
     nearCurrent_ = true;
 
     ++nNearBuilds_;
+    sumListed_ += pairJ_.size();
+    sumNear_ += nearK_.size();
 }
 
 
