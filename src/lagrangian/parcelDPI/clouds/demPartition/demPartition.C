@@ -239,7 +239,9 @@ Foam::demPartition::demPartition
             << exit(FatalIOError);
     }
 
-    engine_.setHalo(&halo_);
+    // The engine's history store is emptied after every fluid step
+    // (collect): pairs of two halo copies need not be evaluated
+    engine_.setHalo(&halo_, false);
 
     Info<< "DEM load balance: the DEM's own partition of the parcels (rcb),"
         << " re-partitioned when max/mean > " << maxImbalance_ << endl;

@@ -145,7 +145,7 @@ void Foam::DPICloud<CloudType>::setModels()
     else if (Pstream::parRun())
     {
         halo_.reset(new processorHalo(this->mesh()));
-        engine_->setHalo(halo_.get());
+        engine_->setHalo(halo_.get(), true);
     }
 
     injectors_.clear();
