@@ -89,15 +89,13 @@ void Foam::pairContacts::forces
                 const scalar r2 = magSqr(xi0 - s.x[nearJ_[m]]);
                 const bool in = !(r2 >= nearCut2_[m]);
 
-                selectedM_[n] = m;
-                selectedI_[n] = i;
-                n += in;
-
-                // Selected without a branch on the outcome (about half the
-                // near pairs of a packed bed are apart). The history reset
-                // is rarely due (a contact that has just come apart): one
-                // well-predicted branch on the three together
-                if (advance & nearHasXi[m] & !in)
+                if (in)
+                {
+                    selectedM_[n] = m;
+                    selectedI_[n] = i;
+                    ++n;
+                }
+                else if (advance && nearHasXi[m])
                 {
                     nearXi[m] = Zero;
                     nearHasXi[m] = false;
