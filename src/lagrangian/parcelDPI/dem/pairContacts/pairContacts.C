@@ -48,9 +48,17 @@ void Foam::pairContacts::build
         }
     );
 
-    // The half list in globalId order
+    // The half list in globalId order. Unless copyPairs_, the pairs of two
+    // halo copies (rows from s.owned() on) are left out: only owned rows
+    // are integrated, and the owners evaluate these pairs; their forces on
+    // the copies would be thrown away (50,000 carriers on 2 processes: 1
+    // in 11 of a processor's near pairs)
     const DynamicList<labelPair>& pairs = search_.pairs();
-    const label np = pairs.size();
+    const label firstCopy = copyPairs_ ? n : s.owned();
+    const auto listed = [firstCopy](const labelPair& pr)
+    {
+        return pr.first() < firstCopy || pr.second() < firstCopy;
+    };
     const labelUList& id = s.globalId;
 
     labelList byId(identity(n));
@@ -62,9 +70,14 @@ void Foam::pairContacts::build
     );
 
     labelList fill(n, 0);
+    label np = 0;
     for (const labelPair& pr : pairs)
     {
-        ++fill[pr.first()];
+        if (listed(pr))
+        {
+            ++fill[pr.first()];
+            ++np;
+        }
     }
 
     pairRow_.setSize(n);
@@ -90,7 +103,10 @@ void Foam::pairContacts::build
     pairJ_.setSize(np);
     for (const labelPair& pr : pairs)
     {
-        pairJ_[fill[pr.first()]++] = pr.second();
+        if (listed(pr))
+        {
+            pairJ_[fill[pr.first()]++] = pr.second();
+        }
     }
 
     for (label a = 0; a < nRows; ++a)
@@ -161,8 +177,6 @@ void Foam::pairContacts::buildNear
     // to the listed pairs (five to ten times as many in a packed bed) it
     // would set the run's peak memory
     const label np = pairJ_.size();
-    // Rows from here on are halo copies; with copy pairs left out
-    const label nOwned = copyPairs_ ? s.size() : s.owned();
     List<bool> near(np);
     label m = 0;
     forAll(pairRow_, a)
@@ -173,16 +187,10 @@ void Foam::pairContacts::buildNear
         {
             // Left out: at least sqrt(cut2) + nearSkin apart, so at least
             // sqrt(cut2) while no row moves more than half the near skin
-            // (the margin covers round-off).
-            // Also left out, unless copyPairs_: pairs of two halo copies.
-            // Only owned rows are integrated, and the owners evaluate these
-            // pairs; their forces on the copies would be thrown away (50,000
-            // carriers on 2 processes: 1 in 11 of a processor's near pairs)
+            // (the margin covers round-off)
             const label j = pairJ_[k];
             const scalar reach = (sqrt(cut2(s, i, j)) + nearSkin_)*(1 + 1e-9);
-            near[k] =
-                (i < nOwned || j < nOwned)
-             && magSqr(xi - s.x[j]) < sqr(reach);
+            near[k] = magSqr(xi - s.x[j]) < sqr(reach);
             m += near[k];
         }
     }
