@@ -104,11 +104,21 @@ void Foam::pairContacts::forces
         }
         a0 = a1;
 
-        // The selected pairs' kinematics
+        // The selected pairs' kinematics: the separations (gathered from
+        // the rows), then the square roots and divisions column by column
+        // (two pairs per instruction), then the rest per pair
         if (contacts_.size() < n)
         {
             contacts_.setSize(n);
             scale_.setSize(n);
+            dx_.setSize(n);
+            dy_.setSize(n);
+            dz_.setSize(n);
+            r2_.setSize(n);
+            rSum_.setSize(n);
+            Rstar_.setSize(n);
+            delta_.setSize(n);
+            a_.setSize(n);
         }
         for (label k = 0; k < n; ++k)
         {
@@ -117,7 +127,19 @@ void Foam::pairContacts::forces
             const label j = nearJ_[m];
 
             const vector d(s.x[i] - s.x[j]);
-            const scalar r2 = magSqr(d);
+            dx_[k] = d.x();
+            dy_[k] = d.y();
+            dz_[k] = d.z();
+            r2_[k] = magSqr(d);
+            rSum_[k] = s.r[i] + s.r[j];
+            Rstar_[k] = nearRstar_[m];
+        }
+        columnGeometry(n);
+        for (label k = 0; k < n; ++k)
+        {
+            const label m = selectedM_[k];
+            const label i = selectedI_[k];
+            const label j = nearJ_[m];
 
             demContact& c = contacts_[k];
             c.wall = false;
@@ -126,17 +148,16 @@ void Foam::pairContacts::forces
             // dashpot) but keeps it only when advancing
             c.dt = dt;
 
-            const scalar rSum = s.r[i] + s.r[j];
-            const scalar r = sqrt(r2);
-            c.n = d/r;
-            c.delta = rSum - r;
+            c.n = vector(dx_[k], dy_[k], dz_[k]);
+            c.delta = delta_[k];
+            c.a = a_[k];
             c.props = &materials.pair(s.typeId[i], s.typeId[j]);
             c.typei = s.typeId[i];
             c.typej = s.typeId[j];
             c.ri = s.r[i];
             c.rj = s.r[j];
-            c.Rstar = s.r[i]*s.r[j]/rSum;
-            c.mstar = s.m[i]*s.m[j]/(s.m[i] + s.m[j]);
+            c.Rstar = Rstar_[k];
+            c.mstar = nearMstar_[m];
 
             scale_[k] = pairScaling::pair(s.N[i], s.N[j]);
 

@@ -106,6 +106,7 @@ void Foam::wallContacts::rowForces
             continue;
         }
 
+        c.a = sqrt(c.Rstar*c.delta);
         c.ci = rp - 0.5*c.delta;
         c.vn = s.v[p] & c.n;
         c.vs = (s.v[p] - c.vn*c.n) - ((c.ci*s.omega[p]) ^ c.n);
