@@ -189,42 +189,81 @@ void Foam::neighbourSearch::build
     }
 
     // Each particle looks into its own level (larger rows only, so each
-    // pair once) and into every coarser level (all particles there)
-    for (label p = 0; p < n; ++p)
+    // pair once) and into every coarser level (all particles there).
+    //
+    // The three cells k - 1 .. k + 1 of each (i, j) column are one run of
+    // the sorted entries: one search per column (9, not 27 hash lookups,
+    // and no map to allocate per build). The particles are taken level by
+    // level in the order of their cells, and a level's 9 runs are searched
+    // again only when a particle's cell in it differs from the last one's:
+    // rows in one cell share them, and so do the fine particles in one
+    // coarse cell (the API coating a carrier), most of the searches. The
+    // pairs found are the same (the half list orders them by globalId).
+    struct column
     {
-        const label lp = levelOf[p];
-        const point& xp = s.x[p];
-        const scalar rp = s.r[p];
+        std::vector<std::pair<std::uint64_t, label>>::const_iterator first;
+        std::uint64_t hi;
+    };
+    struct runs
+    {
+        std::uint64_t cell = ~std::uint64_t(0);
+        label n = 0;
+        column c[9];
+    };
+    std::vector<runs> cache(nLevels_);
 
-        for (label L = lp; L < nLevels_; ++L)
+    for (label lp = 0; lp < nLevels_; ++lp)
+    {
+        for (runs& r : cache)
         {
-            const level& lev = levels[L];
-            label ijk[3];
-            cellOf(xp, lev.h, ijk);
+            r.cell = ~std::uint64_t(0);
+        }
 
-            // The three cells k - 1 .. k + 1 of each (i, j) column are one
-            // run of the sorted entries: one search per column (9, not 27
-            // hash lookups, and no map to allocate per build); cells and
-            // rows are visited in the same order as cell by cell
-            const label kLo = max(ijk[2] - 1, label(0));
-            const label kHi = ijk[2] + 1;
-            for (label i = ijk[0] - 1; i <= ijk[0] + 1; ++i)
+        for (const auto& entry : levels[lp].entries)
+        {
+            const label p = entry.second;
+            const point& xp = s.x[p];
+            const scalar rp = s.r[p];
+
+            for (label L = lp; L < nLevels_; ++L)
             {
-                if (i < 0) continue;
-                for (label j = ijk[1] - 1; j <= ijk[1] + 1; ++j)
-                {
-                    if (j < 0) continue;
+                const level& lev = levels[L];
+                label ijk[3];
+                cellOf(xp, lev.h, ijk);
 
-                    const std::uint64_t hi = cellKey(i, j, kHi);
+                runs& r = cache[L];
+                const std::uint64_t cell = cellKey(ijk[0], ijk[1], ijk[2]);
+                if (cell != r.cell)
+                {
+                    r.cell = cell;
+                    r.n = 0;
+                    const label kLo = max(ijk[2] - 1, label(0));
+                    const label kHi = ijk[2] + 1;
+                    for (label i = ijk[0] - 1; i <= ijk[0] + 1; ++i)
+                    {
+                        if (i < 0) continue;
+                        for (label j = ijk[1] - 1; j <= ijk[1] + 1; ++j)
+                        {
+                            if (j < 0) continue;
+                            column& c = r.c[r.n++];
+                            c.first = std::lower_bound
+                            (
+                                lev.entries.begin(),
+                                lev.entries.end(),
+                                std::make_pair(cellKey(i, j, kLo), label(-1))
+                            );
+                            c.hi = cellKey(i, j, kHi);
+                        }
+                    }
+                }
+
+                for (label ci = 0; ci < r.n; ++ci)
+                {
+                    const column& c = r.c[ci];
                     for
                     (
-                        auto e = std::lower_bound
-                        (
-                            lev.entries.begin(),
-                            lev.entries.end(),
-                            std::make_pair(cellKey(i, j, kLo), label(-1))
-                        );
-                        e != lev.entries.end() && e->first <= hi;
+                        auto e = c.first;
+                        e != lev.entries.end() && e->first <= c.hi;
                         ++e
                     )
                     {
