@@ -41,7 +41,34 @@ struct level
     // (cell key, row), sorted: a cell's rows are contiguous, and so are
     // the cells of one (i, j) column, k being the key's lowest bits
     std::vector<std::pair<std::uint64_t, Foam::label>> entries;
+    // The entries' keys alone, searched
+    std::vector<std::uint64_t> keys;
 };
+
+
+//- The first of the n sorted keys not below key. Without a branch on the
+//  comparisons: in a sparse spray every particle's cell is new and these
+//  searches were most of a build, their branches mispredicted half the time
+inline Foam::label firstNotBelow
+(
+    const std::vector<std::uint64_t>& keys,
+    const std::uint64_t key
+)
+{
+    const std::uint64_t* base = keys.data();
+    std::size_t n = keys.size();
+    if (n == 0)
+    {
+        return 0;
+    }
+    while (n > 1)
+    {
+        const std::size_t half = n/2;
+        base = (base[half] < key) ? base + half : base;
+        n -= half;
+    }
+    return Foam::label(base - keys.data()) + (*base < key);
+}
 
 } // End anonymous namespace
 
@@ -186,6 +213,11 @@ void Foam::neighbourSearch::build
     for (level& lev : levels)
     {
         std::sort(lev.entries.begin(), lev.entries.end());
+        lev.keys.resize(lev.entries.size());
+        for (std::size_t e = 0; e < lev.entries.size(); ++e)
+        {
+            lev.keys[e] = lev.entries[e].first;
+        }
     }
 
     // Each particle looks into its own level (larger rows only, so each
@@ -246,12 +278,9 @@ void Foam::neighbourSearch::build
                         {
                             if (j < 0) continue;
                             column& c = r.c[r.n++];
-                            c.first = std::lower_bound
-                            (
-                                lev.entries.begin(),
-                                lev.entries.end(),
-                                std::make_pair(cellKey(i, j, kLo), label(-1))
-                            );
+                            c.first =
+                                lev.entries.begin()
+                              + firstNotBelow(lev.keys, cellKey(i, j, kLo));
                             c.hi = cellKey(i, j, kHi);
                         }
                     }
