@@ -149,10 +149,11 @@ namespace Foam
 {
     // The loop of pairContacts::columnGeometry. Each iteration is
     // independent and the same arithmetic as one pair's alone, so the
-    // compiler does two pairs per instruction (their square roots and
-    // divisions were most of the sweep's time in a packed bed) with the same
-    // results to the bit. (Its columns are arguments: with them as local
-    // restrict pointers the compiler does not vectorise it.)
+    // compiler does two pairs per instruction (square roots and divisions:
+    // the pair term -13 % on a packed bed of 2,000 carriers, no change at
+    // 10,000, where the sweep waits on memory) with the same results to the
+    // bit. (Its columns are arguments: with them as local restrict
+    // pointers the compiler does not vectorise it.)
     static void pairGeometry
     (
         const label n,
