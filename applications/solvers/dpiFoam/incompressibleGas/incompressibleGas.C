@@ -25,17 +25,19 @@ namespace
 // m/s at the first step instead of -1.3e-5, and the run diverged within 3
 // steps; on orthogonal boxes T is diagonal and the error vanishes). The
 // same reconstruction here with named operands, so the product is written
-// to fresh storage (tests/cases/gasOGridTube)
+// to fresh storage (tests/cases/gasOGridTube). SfHat = Sf/|Sf| and
+// invT = inv(sum over the cell's faces of SfHat Sf) are the caller's,
+// computed once.
 Foam::tmp<Foam::volVectorField> reconstructFlux
 (
-    const Foam::surfaceScalarField& ssf
+    const Foam::surfaceScalarField& ssf,
+    const Foam::surfaceVectorField& SfHat,
+    const Foam::volTensorField& invT
 )
 {
     using namespace Foam;
 
     const fvMesh& mesh = ssf.mesh();
-    const surfaceVectorField SfHat(mesh.Sf()/mesh.magSf());
-    const volTensorField invT(inv(fvc::surfaceSum(SfHat*mesh.Sf())));
     const volVectorField sumFlux(fvc::surfaceSum(SfHat*ssf));
 
     tmp<volVectorField> tU
@@ -208,7 +210,9 @@ Foam::incompressibleGas::incompressibleGas
     (
         mesh.time().controlDict().getOrDefault<scalar>("maxCo", 1)
     ),
-    warnedCo_(0)
+    warnedCo_(0),
+    SfHat_("SfHat", mesh.Sf()/mesh.magSf()),
+    invT_("invT", inv(fvc::surfaceSum(SfHat_*mesh.Sf())))
 {
     setRefCell(p_, pimple_.dict(), pRefCell_, pRefValue_);
     mesh.setFluxRequired(p_.name());
@@ -368,7 +372,11 @@ void Foam::incompressibleGas::solve(basicDPICloud& cloud)
             (
                 UcEqn
              ==
-                fc - reconstructFlux(fvc::snGrad(p)*mesh_.magSf())
+                fc
+              - reconstructFlux
+                (
+                    fvc::snGrad(p)*mesh_.magSf(), SfHat_, invT_
+                )
             );
         }
 
@@ -411,7 +419,7 @@ void Foam::incompressibleGas::solve(basicDPICloud& cloud)
                       + rAUc*fc
                       - rAUc*reconstructFlux
                         (
-                            (pEqn.flux()/alphacf_)/rAUcf
+                            (pEqn.flux()/alphacf_)/rAUcf, SfHat_, invT_
                         );
                     Uc.correctBoundaryConditions();
                 }
