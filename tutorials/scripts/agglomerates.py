@@ -1,14 +1,15 @@
 #!/usr/bin/python3
-"""Agglomerate statistics and pictures for the Case 5 / Case 6 tutorials.
+"""Agglomerate statistics and pictures (Case 5, Case 6, the inhaler).
 
 Usage:
   agglomerates.py history  CASE [--prefix P] [--title T]
       reads CASE/postProcessing/<cloud>/agglomerates/*/agglomerates.dat
       (columns: time nAgglomerates apiPrimaries singletAPIPrimaries
       attachedAPIPrimaries histogram...) and draws P_agglomerates.png:
-      API primaries attached to carriers / detached / singlets and the
-      number of agglomerates against time. Prints the final counts and the
-      time since which the attached count has not changed.
+      API primaries attached to carriers / detached / singlets, the
+      number of agglomerates and the agglomerates by size (1, 2, 3-4, 5-8,
+      ... parcels) against time. Prints the final counts and the time
+      since which the attached count has not changed.
   agglomerates.py summary  CASE [--label L]
       prints one line: L: API primaries attached to the carrier X, detached
       Y (singlets Z), of T, at time t, from the last line of agglomerates.dat
@@ -51,8 +52,11 @@ def read_history(case, cloud="dpiCloud"):
             if line.startswith("#") or not line.strip():
                 continue
             v = line.split()
-            rows[float(v[0])] = [float(x) for x in v[:5]]
-    return np.array([rows[t] for t in sorted(rows)])
+            rows[float(v[0])] = [float(x) for x in v]
+    # the histogram's trailing empty classes are not written: pad with 0
+    width = max(len(r) for r in rows.values())
+    return np.array([rows[t] + [0.0]*(width - len(rows[t]))
+                     for t in sorted(rows)])
 
 
 def attached_from_fields(c, api_types):
@@ -75,17 +79,33 @@ def settled_since(h):
 def cmd_history(a):
     h = read_history(a.case)
     t = h[:, 0]
-    fig, (ax1, ax2) = plt.subplots(2, 1, figsize=(7, 6), sharex=True)
-    ax1.plot(t*1e3, h[:, 4], label="attached to the carrier")
+    sizes = h[:, 5:]
+    nPanels = 3 if sizes.shape[1] else 2
+    fig, axes = plt.subplots(nPanels, 1, figsize=(7, 3 + 1.5*nPanels),
+                             sharex=True)
+    ax1, ax2 = axes[0], axes[1]
+    ax1.plot(t*1e3, h[:, 4], label="attached to a carrier")
     ax1.plot(t*1e3, h[:, 2] - h[:, 4], label="detached")
     ax1.plot(t*1e3, h[:, 3], "--", label="singlets")
     ax1.set_ylabel("API primaries")
     ax1.legend()
     ax2.plot(t*1e3, h[:, 1], color="k")
     ax2.set_ylabel("agglomerates (incl. singlets)")
-    ax2.set_xlabel("time [ms]")
+    if nPanels == 3:
+        # the size classes of agglomerates.dat: 1, 2, 3-4, 5-8, ... parcels
+        for k in range(sizes.shape[1]):
+            if sizes[:, k].any():
+                lo, hi = (1, 1) if k == 0 else (2**(k - 1) + 1, 2**k)
+                label = "%d" % hi if lo == hi or k == 1 else "%d-%d" % (lo, hi)
+                axes[2].semilogy(t*1e3, np.where(sizes[:, k] > 0,
+                                                 sizes[:, k], np.nan),
+                                 label=label + (" parcel" if hi == 1
+                                                else " parcels"))
+        axes[2].set_ylabel("agglomerates by size")
+        axes[2].legend(fontsize=7, ncol=3)
+    axes[-1].set_xlabel("time [ms]")
     ax1.set_title(a.title or "agglomerates")
-    for ax in (ax1, ax2):
+    for ax in axes:
         ax.grid(True, alpha=0.3)
     fig.tight_layout()
     fig.savefig("%s_agglomerates.png" % a.prefix, dpi=120)
