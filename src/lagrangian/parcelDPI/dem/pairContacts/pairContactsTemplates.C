@@ -33,14 +33,14 @@ void Foam::pairContacts::forces
     // (which is never -0, starting from +0), so skipping them changes no bit
     // (nor does leaving them out of the near list).
     //
-    // Three loops over a block of rows: the pairs within range are
-    // selected, then their kinematics computed, then their laws. Each
-    // loop's iterations are short and independent, so the processor
-    // overlaps the square roots of several pairs; with the kinematics and
-    // the law inline in one loop per pair they formed one long chain per
-    // pair (packed bed of 10,000 carriers: pair term 6.1 -> 4.9 s). The law
-    // loop takes the selected pairs in the order of a single sweep, so
-    // every sum takes its terms in the same order (bit-identical results).
+    // Loops over a block of rows: the pairs within range are selected,
+    // then their geometry computed in columns (the square roots and
+    // divisions of two pairs per instruction), then each pair's contact
+    // and law. With the geometry inline in one loop per pair it formed one
+    // long chain per pair (packed bed of 10,000 carriers: pair term 6.1 ->
+    // 4.9 s when split out). The law loop takes the selected pairs in the
+    // order of a single sweep, so every sum takes its terms in the same
+    // order (bit-identical results).
     //
     // The partners' positions are read in no spatial order (the rows are
     // in the cloud's order): ask for them a few pairs ahead
@@ -48,8 +48,8 @@ void Foam::pairContacts::forces
     const label ahead = 16;
     const label nRows = pairRow_.size();
 
-    // Near pairs per block: the block's kinematics (contacts_, ~170 bytes
-    // a pair) stay in the first-level cache
+    // Near pairs per block: the block's selection and geometry columns
+    // (~80 bytes a pair) stay in the first-level cache
     const label blockPairs = 64;
 
     label a0 = 0;
@@ -104,13 +104,11 @@ void Foam::pairContacts::forces
         }
         a0 = a1;
 
-        // The selected pairs' kinematics: the separations (gathered from
-        // the rows), then the square roots and divisions column by column
-        // (two pairs per instruction), then the rest per pair
-        if (contacts_.size() < n)
+        // The selected pairs' geometry: the separations (gathered from the
+        // rows), then the square roots and divisions column by column (two
+        // pairs per instruction)
+        if (dx_.size() < n)
         {
-            contacts_.setSize(n);
-            scale_.setSize(n);
             dx_.setSize(n);
             dy_.setSize(n);
             dz_.setSize(n);
@@ -135,13 +133,17 @@ void Foam::pairContacts::forces
             Rstar_[k] = nearRstar_[m];
         }
         columnGeometry(n);
+
+        // Then each pair's contact and its law, in order. (The contact
+        // is built where the law uses it: kept in a block's array between
+        // two loops it cost its stores and loads, ~170 bytes a pair.)
         for (label k = 0; k < n; ++k)
         {
             const label m = selectedM_[k];
             const label i = selectedI_[k];
             const label j = nearJ_[m];
 
-            demContact& c = contacts_[k];
+            demContact c;
             c.wall = false;
             // A re-evaluation also takes the trial step xi + v_s dt (a new
             // contact must not start in the sticking branch with its
@@ -159,27 +161,7 @@ void Foam::pairContacts::forces
             c.Rstar = Rstar_[k];
             c.mstar = nearMstar_[m];
 
-            scale_[k] = pairScaling::pair(s.N[i], s.N[j]);
-
-            // The kinematics of a touching contact (of a separated one
-            // they are not used)
-            c.ci = s.r[i] - 0.5*c.delta;
-            c.cj = s.r[j] - 0.5*c.delta;
-            const vector vr(s.v[i] - s.v[j]);
-            c.vn = vr & c.n;
-            c.vs =
-                (vr - c.vn*c.n) - ((c.ci*s.omega[i] + c.cj*s.omega[j]) ^ c.n);
-            c.omegaRel = s.omega[i] - s.omega[j];
-        }
-
-        // Their laws, in order
-        for (label k = 0; k < n; ++k)
-        {
-            const label m = selectedM_[k];
-            const label i = selectedI_[k];
-            const label j = nearJ_[m];
-            const demContact& c = contacts_[k];
-            const scalar S = scale_[k];
+            const scalar S = pairScaling::pair(s.N[i], s.N[j]);
 
             if (!c.touching())
             {
@@ -196,6 +178,15 @@ void Foam::pairContacts::forces
                 }
                 continue;
             }
+
+            // The kinematics of a touching contact
+            c.ci = s.r[i] - 0.5*c.delta;
+            c.cj = s.r[j] - 0.5*c.delta;
+            const vector vr(s.v[i] - s.v[j]);
+            c.vn = vr & c.n;
+            c.vs =
+                (vr - c.vn*c.n) - ((c.ci*s.omega[i] + c.cj*s.omega[j]) ^ c.n);
+            c.omegaRel = s.omega[i] - s.omega[j];
 
             vector xi(nearXi[m]);
             vector F, Ti, Tj;
