@@ -39,7 +39,8 @@ const Foam::wordList Foam::demEngine::keys
     "timeStepCheck",
     "startOverlap",
     "overlapCheck",
-    "loadBalance"
+    "loadBalance",
+    "contactStatistics"
 });
 
 
@@ -234,6 +235,12 @@ Foam::demEngine::demEngine(const dictionary& dict, const polyMesh* mesh)
     nParticleSteps_(0),
     halo_(nullptr)
 {
+    if (dict.getOrDefault<bool>("contactStatistics", false))
+    {
+        stats_.reset(new contactStatistics(materials_.names()));
+        diag_.stats = stats_.get();
+    }
+
     if (!(timeStep_ > 0))
     {
         FatalIOErrorInFunction(dict)

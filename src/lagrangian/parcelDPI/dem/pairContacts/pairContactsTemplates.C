@@ -26,6 +26,8 @@ void Foam::pairContacts::forces
 ) const
 {
     const label nOwned = s.owned();
+    // Asked once: the sums below could alias diag for the compiler
+    contactStatistics* const stats = advance ? diag.stats : nullptr;
     List<vector>& nearXi = h.nearXi();
     List<bool>& nearHasXi = h.nearHasXi();
 
@@ -193,6 +195,13 @@ void Foam::pairContacts::forces
             law.touching(c, S, xi, F, Ti, Tj);
             if (advance)
             {
+                if (stats && i < nOwned)
+                {
+                    stats->pair
+                    (
+                        c.typei, c.typej, !nearHasXi[m], F & c.n, dt
+                    );
+                }
                 nearXi[m] = xi;
                 nearHasXi[m] = true;
             }

@@ -156,6 +156,10 @@ void Foam::wallContacts::rowForces
 
         if (advance)
         {
+            if (diag.stats && p < s.owned())
+            {
+                diag.stats->wall(c.typei, c.typej, match < 0, con.f & c.n, dt);
+            }
             contactHistory::wallContact st;
             st.wall = w;
             st.key = wc.key;

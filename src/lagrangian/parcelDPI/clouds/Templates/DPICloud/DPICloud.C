@@ -206,6 +206,19 @@ void Foam::DPICloud<CloudType>::setModels()
             << "# DEM diagnostics at the end of every fluid step" << nl
             << "# time kineticEnergy[J] rotationalEnergy[J] nPairContacts"
             << " nWallContacts maxOverlap/R* nParcels" << nl;
+
+        if (engine_->contactStats())
+        {
+            const fileName statsDir
+            (
+                time.globalPath()/"postProcessing"/this->name()
+               /"contactStatistics"/time.timeName()
+            );
+            mkDir(statsDir);
+            statsFile_.reset(new OFstream(statsDir/"contactStatistics.dat"));
+            statsFile_().precision(10);
+            engine_->contactStats()->writeHeader(statsFile_());
+        }
     }
 
     balance_.reset
@@ -864,6 +877,16 @@ void Foam::DPICloud<CloudType>::writeDiagnostics()
             << ' ' << nParcels << endl;
     }
 
+    if (const contactStatistics* stats = engine_->contactStats())
+    {
+        // collective: every processor's counts go to the master
+        stats->write
+        (
+            this->db().time().value(),
+            statsFile_.valid() ? statsFile_() : Snull
+        );
+    }
+
     const demState& demRows =
         partition_.valid() ? partition_->state() : state_;
     balance_->sample
@@ -925,6 +948,7 @@ Foam::DPICloud<CloudType>::DPICloud
     observer_(nullptr),
     trace_(nullptr),
     diagFile_(nullptr),
+    statsFile_(nullptr),
     agglomerates_(nullptr),
     halo_(nullptr),
     partition_(nullptr),
@@ -969,6 +993,7 @@ Foam::DPICloud<CloudType>::DPICloud
     observer_(nullptr),
     trace_(nullptr),
     diagFile_(nullptr),
+    statsFile_(nullptr),
     agglomerates_(nullptr),
     halo_(nullptr),
     partition_(nullptr),
@@ -1001,6 +1026,7 @@ Foam::DPICloud<CloudType>::DPICloud
     observer_(nullptr),
     trace_(nullptr),
     diagFile_(nullptr),
+    statsFile_(nullptr),
     agglomerates_(nullptr),
     halo_(nullptr),
     partition_(nullptr),
