@@ -41,7 +41,10 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import foamLagrangian as fl  # noqa: E402
 
 
-def read_history(case, cloud="dpiCloud"):
+def read_history(case, cloud="dpiCloud", histogram=False):
+    """Rows of agglomerates.dat by time: time nAgglomerates apiPrimaries
+    singletAPIPrimaries attachedAPIPrimaries, and with histogram the size
+    classes after them (1, 2, 3-4, 5-8, ... parcels; 0 where not written)."""
     files = glob.glob(os.path.join(case, "postProcessing", cloud,
                                    "agglomerates", "*", "agglomerates.dat"))
     if not files:
@@ -54,8 +57,8 @@ def read_history(case, cloud="dpiCloud"):
             v = line.split()
             rows[float(v[0])] = [float(x) for x in v]
     # the histogram's trailing empty classes are not written: pad with 0
-    width = max(len(r) for r in rows.values())
-    return np.array([rows[t] + [0.0]*(width - len(rows[t]))
+    width = max(len(r) for r in rows.values()) if histogram else 5
+    return np.array([rows[t][:width] + [0.0]*(width - len(rows[t]))
                      for t in sorted(rows)])
 
 
@@ -77,7 +80,7 @@ def settled_since(h):
 
 
 def cmd_history(a):
-    h = read_history(a.case)
+    h = read_history(a.case, histogram=True)
     t = h[:, 0]
     sizes = h[:, 5:]
     nPanels = 3 if sizes.shape[1] else 2

@@ -197,9 +197,12 @@ void Foam::pairContacts::forces
             {
                 if (stats && i < nOwned)
                 {
-                    stats->pair
+                    stats->add
                     (
-                        c.typei, c.typej, !nearHasXi[m], F & c.n, dt
+                        stats->pairClass(c.typei, c.typej),
+                        !nearHasXi[m],
+                        F & c.n,
+                        dt
                     );
                 }
                 nearXi[m] = xi;

@@ -158,7 +158,13 @@ void Foam::wallContacts::rowForces
         {
             if (diag.stats && p < s.owned())
             {
-                diag.stats->wall(c.typei, c.typej, match < 0, con.f & c.n, dt);
+                diag.stats->add
+                (
+                    diag.stats->wallClass(c.typei, c.typej),
+                    match < 0,
+                    con.f & c.n,
+                    dt
+                );
             }
             contactHistory::wallContact st;
             st.wall = w;
