@@ -99,7 +99,7 @@ def cmd_history(a):
         for k in range(sizes.shape[1]):
             if sizes[:, k].any():
                 lo, hi = (1, 1) if k == 0 else (2**(k - 1) + 1, 2**k)
-                label = "%d" % hi if lo == hi or k == 1 else "%d-%d" % (lo, hi)
+                label = "%d" % hi if lo == hi else "%d-%d" % (lo, hi)
                 axes[2].semilogy(t*1e3, np.where(sizes[:, k] > 0,
                                                  sizes[:, k], np.nan),
                                  label=label + (" parcel" if hi == 1
