@@ -1,0 +1,111 @@
+#!/usr/bin/python3
+"""Where a run's time went: a table per dpiFoam log, from the lines dpiFoam
+prints at its end.
+
+    runCost.py log.dpiFoam.sedimentation log.dpiFoam.inhalation
+               [--tools log.blockMesh log.decomposePar.* ...] [--output cost.txt]
+
+Per dpiFoam log (wall-clock seconds of the master process, as dpiFoam's
+"Cost" line gives them): start-up (mesh, gas, cloud, injection), the gas
+solve, the cloud's fluid steps and, inside those, the DEM engine's terms
+(its "DEM performance" lines: pair, wall, neighbour, integrate, halo
+exchange, sub-step gas forces) and the rest of the cloud (tracking through
+the mesh, agglomerates, the coupling's sources), then the rest of the time
+loop (writing, function objects) and the total. The tools' logs (OpenFOAM
+utilities: blockMesh, decomposePar, reconstructPar, foamToVTK) add their
+ClockTime. Prints the table and writes it to --output.
+"""
+import argparse
+import re
+import sys
+
+ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+ap.add_argument("logs", nargs="+", help="dpiFoam logs, one per stage")
+ap.add_argument("--tools", nargs="*", default=[],
+                help="logs of OpenFOAM utilities (their ClockTime is added)")
+ap.add_argument("--output", help="also write the table here")
+a = ap.parse_args()
+
+NUM = r"([-+0-9.eE]+)"
+COST = re.compile(r"^Cost \(wall-clock s, this process\): start-up " + NUM +
+                  r", gas " + NUM + r", cloud " + NUM +
+                  r", the rest \(writing, function objects\) " + NUM +
+                  r", total " + NUM)
+TERMS = [("pair", r"pair " + NUM + r" s"),
+         ("wall", r"wall " + NUM + r" s"),
+         ("neighbour", r"neighbour " + NUM + r" s"),
+         ("integrate", r"integrate " + NUM + r" s"),
+         ("halo", r"halo exchange " + NUM + r" s"),
+         ("subStepGas", r"sub-step fluid forces " + NUM + r" s")]
+CLOCK = re.compile(r"ClockTime = " + NUM)
+
+
+def stage(path):
+    """The cost of one dpiFoam log, or exit with the reason"""
+    try:
+        lines = open(path, errors="replace").read().splitlines()
+    except OSError as e:
+        sys.exit("runCost.py: cannot read %s: %s" % (path, e))
+    cost = None
+    dem = {}
+    for i, line in enumerate(lines):
+        m = COST.match(line)
+        if m:
+            cost = [float(x) for x in m.groups()]
+        if line.startswith("DEM performance:") and i + 1 < len(lines):
+            dem = {}
+            for key, pat in TERMS:
+                t = re.search(pat, lines[i + 1])
+                dem[key] = float(t.group(1)) if t else 0.0
+    if cost is None:
+        sys.exit("runCost.py: no 'Cost' line in %s (did dpiFoam finish?)"
+                 % path)
+    startUp, gas, cloud, rest, total = cost
+    engine = sum(dem.values())
+    row = dict(startUp=startUp, gas=gas, cloud=cloud, rest=rest,
+               total=total, cloudOther=cloud - engine)
+    row.update(dem)
+    return row
+
+
+def clock(path):
+    """The last ClockTime of an OpenFOAM utility's log (0 if none)"""
+    try:
+        text = open(path, errors="replace").read()
+    except OSError:
+        return 0.0
+    got = CLOCK.findall(text)
+    return float(got[-1]) if got else 0.0
+
+
+cols = [("total", "total"), ("startUp", "start-up"), ("gas", "gas"),
+        ("pair", "DEM pair"), ("wall", "DEM wall"),
+        ("neighbour", "DEM neighbour"), ("integrate", "DEM integrate"),
+        ("halo", "DEM halo"), ("subStepGas", "sub-step gas forces"),
+        ("cloudOther", "rest of cloud"), ("rest", "writing, function objects")]
+
+out = ["Where the time went (wall-clock s of the master process; dpiFoam's "
+       "'Cost' and 'DEM performance' lines)", ""]
+head = "| run | " + " | ".join(label for _, label in cols) + " |"
+out += [head, "|---" + "|---:"*len(cols) + "|"]
+sumTotal = 0.0
+for path in a.logs:
+    r = stage(path)
+    sumTotal += r["total"]
+    name = path.split("/")[-1]
+    name = name[len("log.dpiFoam."):] if name.startswith("log.dpiFoam.") \
+        else name
+    out.append("| %s | " % name + " | ".join(
+        "%.4g (%.0f %%)" % (r.get(k, 0.0), 100*r.get(k, 0.0)/r["total"])
+        if k != "total" and r["total"] > 0 else "%.4g" % r.get(k, 0.0)
+        for k, _ in cols) + " |")
+tools = sum(clock(p) for p in a.tools)
+out += ["", "dpiFoam runs: %.4g s; OpenFOAM utilities (%d logs): %.4g s; "
+        "together %.4g s = %.2f h" % (sumTotal, len(a.tools), tools,
+                                     sumTotal + tools,
+                                     (sumTotal + tools)/3600)]
+text = "\n".join(out)
+print(text)
+if a.output:
+    with open(a.output, "w") as f:
+        f.write(text + "\n")
