@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The contacts of the bench/powderVsN runs by class, N against N = 1.
 
-Usage: contacts.py cases [--md contacts.md]
+Usage: contacts.py cases [--md contacts.md] [--last] [--windows T0 T1 ...]
 
 Reads cases/N<N>-seed<seed>/postProcessing/dpiCloud/contactStatistics/*/
 contactStatistics.dat (dem/contactStatistics: per fluid step and class of
@@ -13,6 +13,10 @@ material types (carrier-carrier, carrier-API, API-API) or a type against
 the walls (API-wall, carrier-wall). The impulse is the parcels' (N times
 a primary's for a parcel of N), so a class whose impulse is kept when N
 changes exchanges the same momentum.
+
+--last: a run of two stages (bench/inhalerVsN) writes a file per stage
+(its start time); take the last stage's. --windows T0 T1 ...: the windows'
+edges [s] instead of the two halves of the run.
 """
 import argparse
 import collections
@@ -26,6 +30,10 @@ import numpy as np
 ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 ap.add_argument("cases")
 ap.add_argument("--md", default="contacts.md")
+ap.add_argument("--last", action="store_true",
+                help="the last stage's file (the latest start time)")
+ap.add_argument("--windows", type=float, nargs="+",
+                help="window edges [s] (default: the run's two halves)")
 a = ap.parse_args()
 
 runs = collections.defaultdict(list)     # N -> list of rows per run
@@ -37,6 +45,12 @@ for d in sorted(glob.glob(os.path.join(a.cases, "N*-seed*"))):
                                "contactStatistics.dat"))
     if not m or not f:
         continue
+    if a.last:
+        f.sort(key=lambda p: float(p.split(os.sep)[-2]))
+        f = f[-1:]
+    elif len(f) > 1:
+        sys.exit("contacts.py: %d contactStatistics files in %s: give --last"
+                 % (len(f), d))
     rows = [l.split() for l in open(f[0])
             if not l.startswith("#") and l.strip()]
     rows = [(float(r[0]), r[1].split(":")[0], float(r[3]), float(r[4]))
@@ -47,7 +61,8 @@ if 1 not in runs:
     sys.exit("contacts.py: no N = 1 run with contactStatistics in %s"
              " (run with --contacts)" % a.cases)
 
-halves = [(0, 0.5*tEnd), (0.5*tEnd, tEnd)]
+edges = a.windows if a.windows else [0, 0.5*tEnd, tEnd]
+halves = list(zip(edges[:-1], edges[1:]))
 classes = sorted(set(r[1] for rs in runs.values() for rows in rs
                      for r in rows))
 
