@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The contacts of the bench/powderVsN runs by class, N against N = 1.
+"""The contacts of bench runs by class, N against N = 1 (powderVsN, inhalerVsN).
 
 Usage: contacts.py cases [--md contacts.md] [--last] [--windows T0 T1 ...]
 
