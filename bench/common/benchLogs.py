@@ -4,8 +4,15 @@ time logs (bench/common)."""
 import glob
 import os
 import re
+import sys
 
 import numpy as np
+
+# The dpiFoam log's DEM performance lines are read by the tutorials' parser
+# (one reader for the product and the benchmarks)
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "tutorials", "scripts"))
+import dpiLog  # noqa: E402
 
 FLOAT = r"([-+0-9.eE]+|nan|inf)"
 
@@ -41,24 +48,13 @@ def dpiFoamLog(path):
     injection excluded)."""
     with open(path) as f:
         text = f.read()
-    out = {}
-    m = re.search(r"^DEM performance: (\d+) steps, " + FLOAT
-                  + r" particle-steps/s", text, re.M)
-    if not m:
+    perf = dpiLog.demPerformance(text)
+    if perf is None:
         raise RuntimeError("no DEM performance line in " + path)
-    out["steps"] = int(m.group(1))
-    out["engineRate"] = float(m.group(2))
-    m = re.search(r"pair " + FLOAT + r" s \(" + FLOAT + r" %\), wall "
-                  + FLOAT + r" s \(" + FLOAT + r" %\), neighbour " + FLOAT
-                  + r" s \(" + FLOAT + r" %, (\d+) builds(?:, \d+ near builds, \d+ of \d+ listed pairs near(?: on average)?)?\),"
-                  + r" integrate "
-                  + FLOAT + r" s \(" + FLOAT + r" %\)", text)
-    out["tPair"], out["tWall"], out["tNeighbour"], out["tIntegrate"] = (
-        float(m.group(1)), float(m.group(3)), float(m.group(5)),
-        float(m.group(8)))
-    out["builds"] = int(m.group(7))
-    out["tEngine"] = (out["tPair"] + out["tWall"] + out["tNeighbour"]
-                      + out["tIntegrate"])
+    out = {"steps": perf["steps"], "engineRate": perf["rate"],
+           "tPair": perf["pair"], "tWall": perf["wall"],
+           "tNeighbour": perf["neighbour"], "tIntegrate": perf["integrate"],
+           "builds": perf["builds"], "tEngine": perf["engine"]}
     exe = [float(x) for x in
            re.findall(r"^ExecutionTime = " + FLOAT + " s", text, re.M)]
     clk = [float(x) for x in

@@ -16,8 +16,12 @@ utilities: blockMesh, decomposePar, reconstructPar, foamToVTK) add their
 ClockTime. Prints the table and writes it to --output.
 """
 import argparse
+import os
 import re
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import dpiLog  # noqa: E402
 
 ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 ap.add_argument("logs", nargs="+", help="dpiFoam logs, one per stage")
@@ -31,32 +35,23 @@ COST = re.compile(r"^Cost \(wall-clock s, this process\): start-up " + NUM +
                   r", gas " + NUM + r", cloud " + NUM +
                   r", the rest \(writing, function objects\) " + NUM +
                   r", total " + NUM)
-TERMS = [("pair", r"pair " + NUM + r" s"),
-         ("wall", r"wall " + NUM + r" s"),
-         ("neighbour", r"neighbour " + NUM + r" s"),
-         ("integrate", r"integrate " + NUM + r" s"),
-         ("halo", r"halo exchange " + NUM + r" s"),
-         ("subStepGas", r"sub-step fluid forces " + NUM + r" s")]
 CLOCK = re.compile(r"ClockTime = " + NUM)
 
 
 def stage(path):
     """The cost of one dpiFoam log, or exit with the reason"""
     try:
-        lines = open(path, errors="replace").read().splitlines()
+        text = open(path, errors="replace").read()
     except OSError as e:
         sys.exit("runCost.py: cannot read %s: %s" % (path, e))
     cost = None
-    dem = {}
-    for i, line in enumerate(lines):
+    for line in text.splitlines():
         m = COST.match(line)
         if m:
             cost = [float(x) for x in m.groups()]
-        if line.startswith("DEM performance:") and i + 1 < len(lines):
-            dem = {}
-            for key, pat in TERMS:
-                t = re.search(pat, lines[i + 1])
-                dem[key] = float(t.group(1)) if t else 0.0
+    perf = dpiLog.demPerformance(text) or {}
+    dem = {k: perf.get(k, 0.0) for k in
+           ("pair", "wall", "neighbour", "integrate", "halo", "subStepGas")}
     if cost is None:
         sys.exit("runCost.py: no 'Cost' line in %s (did dpiFoam finish?)"
                  % path)
