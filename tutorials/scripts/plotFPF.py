@@ -1,13 +1,15 @@
 #!/usr/bin/python3
 """Plot the fine particle fraction time series of the dpiFPF function object.
 
-    plotFPF.py postProcessing/fpf/<t>/fpf.dat [--output fpf.png] [--title T]
-               [--dumps T0 DT T1]
+    plotFPF.py postProcessing/fpf/<t>/fpf.dat [more fpf.dat] [--output fpf.png]
+               [--title T] [--dumps T0 DT T1]
 
 Top: FPF_box (singlets/API in the box) and FPF_system (singlets in the
 box/all API), per sample and accumulated over the samples (theory 6.2).
 Bottom: the API primaries in the box and the singlets among them.
-Prints the last accumulated values.
+Prints the last accumulated values. Several files (a run restarted: the
+function object begins a file at each start) are taken as one series, by
+time, a later file's sample replacing an earlier one's at the same time.
 
 --dumps T0 DT T1: also the fractions accumulated as the user guide's
 calculateFPF.py does (section 3.4): over the dump times T0, T0 + DT, ...
@@ -28,7 +30,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
 ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-ap.add_argument("file", help="fpf.dat of the dpiFPF function object")
+ap.add_argument("files", nargs="+",
+                help="fpf.dat of the dpiFPF function object, in run order")
 ap.add_argument("--output", default="fpf.png")
 ap.add_argument("--title", default="Fine particle fraction")
 ap.add_argument("--dumps", nargs=3, type=float, metavar=("T0", "DT", "T1"),
@@ -37,13 +40,19 @@ ap.add_argument("--dumps", nargs=3, type=float, metavar=("T0", "DT", "T1"),
 a = ap.parse_args()
 
 cols = None
-with open(a.file) as f:
-    for line in f:
-        if line.startswith("#") and "Time" in line and "FPF_box" in line:
-            cols = line.lstrip("#").split()
-d = np.loadtxt(a.file, comments="#", ndmin=2)
+byTime = {}
+for path in a.files:
+    with open(path) as f:
+        for line in f:
+            if line.startswith("#") and "Time" in line and "FPF_box" in line:
+                cols = line.lstrip("#").split()
+    for row in np.loadtxt(path, comments="#", ndmin=2):
+        byTime[row[0]] = row
+d = np.array([byTime[t] for t in sorted(byTime)]) if byTime \
+    else np.zeros((0, 0))
 if cols is None or d.size == 0:
-    sys.exit("plotFPF: no samples in %s (is the time window reached?)" % a.file)
+    sys.exit("plotFPF: no samples in %s (is the time window reached?)"
+             % " ".join(a.files))
 c = {name: d[:, i] for i, name in enumerate(cols)}
 t_ms = 1e3*c["Time"]
 

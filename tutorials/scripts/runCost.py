@@ -13,7 +13,9 @@ exchange, sub-step gas forces) and the rest of the cloud (tracking through
 the mesh, agglomerates, the coupling's sources), then the rest of the time
 loop (writing, function objects) and the total. The tools' logs (OpenFOAM
 utilities: blockMesh, decomposePar, reconstructPar, foamToVTK) add their
-ClockTime. Prints the table and writes it to --output.
+ClockTime. A log without a Cost line (a run stopped, then resumed from its
+last write: Allrun -resume) gives a row "(stopped)" with its last ClockTime
+only. Prints the table and writes it to --output.
 """
 import argparse
 import os
@@ -53,8 +55,13 @@ def stage(path):
     dem = {k: perf.get(k, 0.0) for k in
            ("pair", "wall", "neighbour", "integrate", "halo", "subStepGas")}
     if cost is None:
-        sys.exit("runCost.py: no 'Cost' line in %s (did dpiFoam finish?)"
-                 % path)
+        # A run that was stopped (then resumed from its last write): only
+        # its wall time up to its last fluid step is known
+        clocks = CLOCK.findall(text)
+        if not clocks:
+            sys.exit("runCost.py: no 'Cost' line and no ClockTime in %s"
+                     % path)
+        return dict(total=float(clocks[-1]), stopped=True)
     startUp, gas, cloud, rest, total = cost
     engine = sum(dem.values())
     row = dict(startUp=startUp, gas=gas, cloud=cloud, rest=rest,
@@ -90,6 +97,10 @@ for path in a.logs:
     name = path.split("/")[-1]
     name = name[len("log.dpiFoam."):] if name.startswith("log.dpiFoam.") \
         else name
+    if r.get("stopped"):
+        out.append("| %s (stopped) | %.4g | " % (name, r["total"])
+                   + " | ".join("-" for _ in cols[1:]) + " |")
+        continue
     out.append("| %s | " % name + " | ".join(
         "%.4g (%.0f %%)" % (r.get(k, 0.0), 100*r.get(k, 0.0)/r["total"])
         if k != "total" and r["total"] > 0 else "%.4g" % r.get(k, 0.0)

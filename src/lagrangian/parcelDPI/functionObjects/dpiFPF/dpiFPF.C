@@ -115,6 +115,12 @@ Foam::functionObjects::dpiFPF::dpiFPF
 {
     read(dict);
 
+    // The sums of the run this one restarts (none at a first start)
+    sum_.apiSystem = getProperty<scalar>("apiSystemSum", 0);
+    sum_.apiBox = getProperty<scalar>("apiBoxSum", 0);
+    sum_.singletsBox = getProperty<scalar>("singletsBoxSum", 0);
+    nSamples_ = getProperty<label>("nSamples", 0);
+
     if (Pstream::master() && writeToFile())
     {
         writeFileHeader(file());
@@ -209,6 +215,12 @@ bool Foam::functionObjects::dpiFPF::execute()
     sum_.apiBox += r.apiBox;
     sum_.singletsBox += r.singletsBox;
     ++nSamples_;
+
+    // Into the state written with the time directories, for a restart
+    setProperty("apiSystemSum", sum_.apiSystem);
+    setProperty("apiBoxSum", sum_.apiBox);
+    setProperty("singletsBoxSum", sum_.singletsBox);
+    setProperty("nSamples", nSamples_);
 
     auto ratio = [](const scalar a, const scalar b)
     {
