@@ -14,7 +14,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 "..", "..", "tutorials", "scripts"))
 import dpiLog  # noqa: E402
 
-FLOAT = r"([-+0-9.eE]+|nan|inf)"
+FLOAT = dpiLog.FLOAT
 
 
 def gnuTime(path):
