@@ -12,6 +12,7 @@ License
 #include "PstreamCombineReduceOps.H"
 #include "ListOps.H"
 #include "SortableList.H"
+#include "demDiagnostics.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -23,6 +24,7 @@ const Foam::label Foam::demPartition::maxRowsPerMessage;
 Foam::label Foam::demPartition::bisect
 (
     const UList<point>& x,
+    const UList<scalar>& w,
     labelList& pts,
     const label begin,
     const label end,
@@ -85,9 +87,29 @@ Foam::label Foam::demPartition::bisect
         pts[begin + k] = sorted[k];
     }
 
-    // The a/n quantile: the cut halfway between the last point of the
-    // lower part and the first of the upper one
-    const label kA = label(scalar(count)*nA/n + 0.5);
+    // The a/n quantile of the load: the lower part is the first kA points,
+    // kA the count whose load sum is nearest a/n of the total (ties go up;
+    // with unit loads kA = count a/n rounded, the parcel-count cut); the
+    // cut halfway between the last point of the lower part and the first
+    // of the upper one
+    scalar total = 0;
+    for (label k = 0; k < count; ++k)
+    {
+        total += w[pts[begin + k]];
+    }
+    const scalar target = total*nA/n;
+    label kA = 0;
+    scalar below = 0;
+    while (kA < count)
+    {
+        const scalar next = below + w[pts[begin + kA]];
+        if (next - target > target - below)
+        {
+            break;
+        }
+        below = next;
+        ++kA;
+    }
     scalar c;
     if (count == 0)
     {
@@ -123,11 +145,11 @@ Foam::label Foam::demPartition::bisect
 
     const label a = bisect
     (
-        x, pts, begin, kSplit, p0, nA, bbA, dir, cut, lower, upper, leafProc
+        x, w, pts, begin, kSplit, p0, nA, bbA, dir, cut, lower, upper, leafProc
     );
     const label b = bisect
     (
-        x, pts, kSplit, end, p0 + nA, n - nA, bbB, dir, cut, lower, upper,
+        x, w, pts, kSplit, end, p0 + nA, n - nA, bbB, dir, cut, lower, upper,
         leafProc
     );
     lower[node] = a;
@@ -137,13 +159,36 @@ Foam::label Foam::demPartition::bisect
 }
 
 
-void Foam::demPartition::partition(const demState& meshRows)
+Foam::scalarList Foam::demPartition::loads(const demState& meshRows) const
 {
-    // All positions to the master, which cuts; the tree to everyone
+    const List<labelList>& keys = *keys_;
+    scalarList load(meshRows.owned(), scalar(1));
+    forAll(load, i)
+    {
+        if (i < keys.size())
+        {
+            load[i] += contactWeight_*keys[i].size();
+        }
+    }
+    return load;
+}
+
+
+void Foam::demPartition::partition
+(
+    const demState& meshRows,
+    const scalarList& load
+)
+{
+    // All positions and loads to the master, which cuts; the tree to
+    // everyone
     List<pointField> allX(Pstream::nProcs());
     allX[Pstream::myProcNo()] =
         pointField(SubList<point>(meshRows.x, meshRows.owned()));
     Pstream::gatherList(allX);
+    List<scalarField> allW(Pstream::nProcs());
+    allW[Pstream::myProcNo()] = load;
+    Pstream::gatherList(allW);
 
     regions_.setSize(Pstream::nProcs());
     if (Pstream::master())
@@ -152,6 +197,10 @@ void Foam::demPartition::partition(const demState& meshRows)
         (
             allX, accessOp<pointField>()
         ));
+        const scalarField w(ListListOps::combine<scalarField>
+        (
+            allW, accessOp<scalarField>()
+        ));
         labelList pts(identity(x.size()));
 
         DynamicList<label> dir, lower, upper, leafProc;
@@ -159,7 +208,7 @@ void Foam::demPartition::partition(const demState& meshRows)
         const scalar big = 0.1*GREAT;
         bisect
         (
-            x, pts, 0, x.size(), 0, Pstream::nProcs(),
+            x, w, pts, 0, x.size(), 0, Pstream::nProcs(),
             boundBox(point::uniform(-big), point::uniform(big)),
             dir, cut, lower, upper, leafProc
         );
@@ -182,7 +231,9 @@ void Foam::demPartition::partition(const demState& meshRows)
 
     Info<< "    DEM partition " << nPartitions_ << ": "
         << returnReduce(meshRows.owned(), sumOp<label>())
-        << " parcels cut into " << Pstream::nProcs() << " regions" << nl;
+        << " parcels cut into " << Pstream::nProcs() << " regions, a"
+        << " parcel's load 1 + " << contactWeight_ << " x its contacts"
+        << nl;
 }
 
 
@@ -197,6 +248,89 @@ Foam::label Foam::demPartition::owner(const point& x) const
 }
 
 
+void Foam::demPartition::readSettings
+(
+    const dictionary& demDict,
+    scalar& maxImbalance,
+    scalar& contactWeight,
+    bool& autoWeight
+)
+{
+    const dictionary lbDict(demDict.subOrEmptyDict("loadBalance"));
+    maxImbalance = lbDict.getOrDefault<scalar>("maxImbalance", 1.1);
+    if (!(maxImbalance >= 1))
+    {
+        FatalIOErrorInFunction(demDict)
+            << "loadBalance/maxImbalance " << maxImbalance
+            << " in dictionary " << demDict.name() << " must be >= 1"
+            << " (max/mean of the load per processor; default 1.1)"
+            << exit(FatalIOError);
+    }
+
+    // auto (measured; the parcel counts until the first measurement), or
+    // a number >= 0
+    autoWeight = true;
+    contactWeight = 0;
+    if (lbDict.found("contactWeight"))
+    {
+        ITstream& is = lbDict.lookup("contactWeight");
+        const token t(is);
+        if (t.isWord() && t.wordToken() == "auto")
+        {
+            autoWeight = true;
+        }
+        else if (t.isNumber() && t.number() >= 0)
+        {
+            autoWeight = false;
+            contactWeight = t.number();
+        }
+        else
+        {
+            FatalIOErrorInFunction(demDict)
+                << "loadBalance/contactWeight " << t
+                << " in dictionary " << demDict.name() << " must be auto"
+                << " or a number >= 0 (a parcel's load is 1 + w x its"
+                << " contacts: auto takes w from the timers, 0 balances the"
+                << " parcel counts; default auto)"
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+void Foam::demPartition::updateWeight()
+{
+    const scalar tContacts = engine_.timePair() + engine_.timeWall();
+    const scalar tRows =
+        engine_.timeNeighbour() + engine_.timeIntegrate()
+      + engine_.timeExternal();
+    const demDiagnostics& d = engine_.diagnostics();
+
+    // This processor's last fluid step: its time in contacts and in rows,
+    // its contacts and rows at the end of the step
+    scalarList step(4);
+    step[0] = tContacts - timeContacts0_;
+    step[1] = tRows - timeRows0_;
+    step[2] = d.nPairContacts + d.nWallContacts;
+    step[3] = dem_.owned();
+    timeContacts0_ = tContacts;
+    timeRows0_ = tRows;
+    // (gathered and scattered: every processor gets the same sums)
+    Pstream::listCombineGather(step, plusEqOp<scalar>());
+    Pstream::listCombineScatter(step);
+
+    if (step[0] > 0 && step[1] > 0 && step[2] > 0 && step[3] > 0)
+    {
+        // Time per contact over time per row; smoothed, so that the timers'
+        // noise does not move the cut every step
+        const scalar w = (step[0]/step[2])/(step[1]/step[3]);
+        contactWeight_ =
+            nWeightSamples_ ? 0.8*contactWeight_ + 0.2*w : w;
+        ++nWeightSamples_;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::demPartition::demPartition
@@ -208,6 +342,11 @@ Foam::demPartition::demPartition
 :
     engine_(engine),
     maxImbalance_(1.1),
+    contactWeight_(0),
+    autoWeight_(true),
+    timeContacts0_(0),
+    timeRows0_(0),
+    nWeightSamples_(0),
     dir_(),
     cut_(),
     lower_(),
@@ -228,23 +367,23 @@ Foam::demPartition::demPartition
     vecCols_(),
     scaCols_()
 {
-    const dictionary lbDict(dict.subOrEmptyDict("loadBalance"));
-    maxImbalance_ = lbDict.getOrDefault<scalar>("maxImbalance", maxImbalance_);
-    if (!(maxImbalance_ >= 1))
-    {
-        FatalIOErrorInFunction(dict)
-            << "loadBalance/maxImbalance " << maxImbalance_
-            << " in dictionary " << dict.name() << " must be >= 1 (max/mean"
-            << " of the parcels per processor; default 1.1)"
-            << exit(FatalIOError);
-    }
+    readSettings(dict, maxImbalance_, contactWeight_, autoWeight_);
 
     // The engine's history store is emptied after every fluid step
     // (collect): pairs of two halo copies need not be evaluated
     engine_.setHalo(&halo_, false);
 
     Info<< "DEM load balance: the DEM's own partition of the parcels (rcb),"
-        << " re-partitioned when max/mean > " << maxImbalance_ << endl;
+        << " a parcel's load 1 + w x its contacts, w = ";
+    if (autoWeight_)
+    {
+        Info<< "the time per contact over the time per row (auto)";
+    }
+    else
+    {
+        Info<< contactWeight_;
+    }
+    Info<< ", re-partitioned when max/mean > " << maxImbalance_ << endl;
 }
 
 
@@ -255,8 +394,15 @@ bool Foam::demPartition::selected(const dictionary& demDict)
     const dictionary lbDict(demDict.subOrEmptyDict("loadBalance"));
 
     // Called once per run on every processor, in serial too: the keys of
-    // loadBalance read here and by the constructor
-    dictKeys::warnUnknown(lbDict, {"type", "maxImbalance"});
+    // loadBalance read here and by the constructor, their values checked
+    // here so that bad input stops a serial run as well
+    dictKeys::warnUnknown
+    (
+        lbDict, {"type", "maxImbalance", "contactWeight"}
+    );
+    scalar maxImbalance, contactWeight;
+    bool autoWeight;
+    readSettings(demDict, maxImbalance, contactWeight, autoWeight);
 
     const word type(lbDict.getOrDefault<word>("type", "rcb"));
     if (type != "rcb" && type != "none")
@@ -349,9 +495,14 @@ void Foam::demPartition::distribute
     const List<scalarField>& scaIn
 )
 {
+    if (autoWeight_ && nPartitions_ > 0)
+    {
+        updateWeight();
+    }
+    const scalarList load(loads(meshRows));
     if (repartition_)
     {
-        partition(meshRows);
+        partition(meshRows, load);
     }
 
     const label nProcs = Pstream::nProcs();
@@ -360,12 +511,12 @@ void Foam::demPartition::distribute
     List<List<vector>>& xi = *xi_;
 
     // The DEM owner of every row; too uneven over all processors (the
-    // parcels moved or left since the last cut): cut again now, so no
-    // fluid step runs above maxImbalance
+    // parcels or their contacts moved since the last cut): cut again now,
+    // so no fluid step runs above maxImbalance
     List<DynamicList<label>> rowsTo(nProcs);
     for (label pass = 0; pass < 2; ++pass)
     {
-        labelList nTo(nProcs, 0);
+        scalarList loadTo(nProcs, Zero);
         forAll(rowsTo, proci)
         {
             rowsTo[proci].clear();
@@ -374,21 +525,21 @@ void Foam::demPartition::distribute
         {
             const label proci = owner(meshRows.x[i]);
             rowsTo[proci].append(i);
-            ++nTo[proci];
+            loadTo[proci] += load[i];
         }
-        Pstream::listCombineGather(nTo, plusEqOp<label>());
-        Pstream::listCombineScatter(nTo);
-        const label nAll = sum(nTo);
+        Pstream::listCombineGather(loadTo, plusEqOp<scalar>());
+        Pstream::listCombineScatter(loadTo);
+        const scalar loadAll = sum(loadTo);
         if
         (
             pass > 0
-         || nAll == 0
-         || scalar(max(nTo))*nProcs/nAll <= maxImbalance_
+         || loadAll == 0
+         || max(loadTo)*nProcs/loadAll <= maxImbalance_
         )
         {
             break;
         }
-        partition(meshRows);
+        partition(meshRows, load);
     }
 
     // Where the DEM rows come from: per source processor a block, in

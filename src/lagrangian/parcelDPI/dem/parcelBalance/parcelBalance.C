@@ -10,6 +10,7 @@ License
 #include "Pstream.H"
 #include "ListOps.H"
 #include "labelField.H"
+#include "FixedList.H"
 #include "OSspecific.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
@@ -40,7 +41,9 @@ Foam::parcelBalance::parcelBalance(const fileName& dir)
     sumParcelRatio_(0),
     maxParcelRatio_(0),
     sumRowRatio_(0),
-    maxRowRatio_(0)
+    maxRowRatio_(0),
+    sumContactRatio_(0),
+    maxContactRatio_(0)
 {
     if (Pstream::parRun() && Pstream::master())
     {
@@ -49,7 +52,8 @@ Foam::parcelBalance::parcelBalance(const fileName& dir)
         file_() << "# DEM load per processor at the end of every fluid step"
             << " (" << Pstream::nProcs() << " processors)" << nl
             << "# time parcels:min max mean max/mean"
-            << " rowsWithHalo:min max mean max/mean" << nl;
+            << " rowsWithHalo:min max mean max/mean"
+            << " pairContacts:min max mean max/mean" << nl;
     }
 }
 
@@ -60,7 +64,8 @@ Foam::scalar Foam::parcelBalance::sample
 (
     const scalar t,
     const label nOwned,
-    const label nRows
+    const label nRows,
+    const label nContacts
 )
 {
     if (!Pstream::parRun())
@@ -68,26 +73,34 @@ Foam::scalar Foam::parcelBalance::sample
         return 1;
     }
 
-    List<labelPair> counts(Pstream::nProcs());
-    counts[Pstream::myProcNo()] = labelPair(nOwned, nRows);
+    List<FixedList<label, 3>> counts(Pstream::nProcs());
+    FixedList<label, 3>& mine = counts[Pstream::myProcNo()];
+    mine[0] = nOwned;
+    mine[1] = nRows;
+    mine[2] = nContacts;
     Pstream::gatherList(counts);
     Pstream::scatterList(counts);
 
     labelField parcels(counts.size());
     labelField rows(counts.size());
+    labelField contacts(counts.size());
     forAll(counts, proci)
     {
-        parcels[proci] = counts[proci].first();
-        rows[proci] = counts[proci].second();
+        parcels[proci] = counts[proci][0];
+        rows[proci] = counts[proci][1];
+        contacts[proci] = counts[proci][2];
     }
     const scalar parcelRatio = maxOverMean(parcels);
     const scalar rowRatio = maxOverMean(rows);
+    const scalar contactRatio = maxOverMean(contacts);
 
     ++nSamples_;
     sumParcelRatio_ += parcelRatio;
     maxParcelRatio_ = max(maxParcelRatio_, parcelRatio);
     sumRowRatio_ += rowRatio;
     maxRowRatio_ = max(maxRowRatio_, rowRatio);
+    sumContactRatio_ += contactRatio;
+    maxContactRatio_ = max(maxContactRatio_, contactRatio);
 
     if (file_.valid())
     {
@@ -97,12 +110,17 @@ Foam::scalar Foam::parcelBalance::sample
             << ' ' << parcelRatio
             << ' ' << min(rows) << ' ' << max(rows)
             << ' ' << scalar(sum(rows))/rows.size()
-            << ' ' << rowRatio << endl;
+            << ' ' << rowRatio
+            << ' ' << min(contacts) << ' ' << max(contacts)
+            << ' ' << scalar(sum(contacts))/contacts.size()
+            << ' ' << contactRatio << endl;
     }
 
     Info<< "    DEM load: parcels per processor " << min(parcels) << " to "
         << max(parcels) << ", max/mean " << parcelRatio
-        << "; with halo copies max/mean " << rowRatio << nl;
+        << "; with halo copies max/mean " << rowRatio
+        << "; pair contacts " << min(contacts) << " to " << max(contacts)
+        << ", max/mean " << contactRatio << nl;
 
     return parcelRatio;
 }
@@ -119,7 +137,8 @@ void Foam::parcelBalance::summary(Ostream& os) const
         << sumParcelRatio_/nSamples_ << " on average, "
         << maxParcelRatio_ << " at worst; with halo copies "
         << sumRowRatio_/nSamples_ << " on average, " << maxRowRatio_
-        << " at worst" << endl;
+        << " at worst; pair contacts " << sumContactRatio_/nSamples_
+        << " on average, " << maxContactRatio_ << " at worst" << endl;
 }
 
 

@@ -893,7 +893,8 @@ void Foam::DPICloud<CloudType>::writeDiagnostics()
     (
         this->db().time().value(),
         demRows.owned(),
-        demRows.size()
+        demRows.size(),
+        d.nPairContacts
     );
 
     checkContacts();
