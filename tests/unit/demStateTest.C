@@ -34,4 +34,49 @@ TEST(demState, appendKeepsRowsAligned)
     EXPECT_EQ(s.globalId.size(), 0);
 }
 
+// reorder moves every column's row together (the DEM partition orders its
+// rows by globalId with it); rows after the permuted ones stay as they are
+TEST(demState, reorderMovesWholeRows)
+{
+    demState s;
+    for (label k = 0; k < 4; ++k)
+    {
+        s.append
+        (
+            point(k, 0, 0), vector(0, k, 0), vector(0, 0, k), 1e-6*(k + 1),
+            1e-12*(k + 1), k + 1, k % 2, 100 - k
+        );
+        s.fExt[k] = vector(k, k, 0);
+        s.f[k] = vector(0, k, k);
+        s.torque[k] = vector(k, 0, k);
+        s.fContact[k] = vector(-k, 0, 0);
+        s.tContact[k] = vector(0, -k, 0);
+    }
+
+    // the first three rows by increasing globalId: 98, 99, 100
+    const labelList order({2, 1, 0});
+    s.reorder(order);
+
+    ASSERT_EQ(s.size(), 4);
+    forAll(order, k)
+    {
+        const label was = order[k];
+        EXPECT_EQ(s.globalId[k], 100 - was);
+        EXPECT_EQ(s.x[k], point(was, 0, 0));
+        EXPECT_EQ(s.v[k], vector(0, was, 0));
+        EXPECT_EQ(s.omega[k], vector(0, 0, was));
+        EXPECT_DOUBLE_EQ(s.r[k], 1e-6*(was + 1));
+        EXPECT_DOUBLE_EQ(s.m[k], 1e-12*(was + 1));
+        EXPECT_DOUBLE_EQ(s.N[k], was + 1);
+        EXPECT_EQ(s.typeId[k], was % 2);
+        EXPECT_EQ(s.fExt[k], vector(was, was, 0));
+        EXPECT_EQ(s.f[k], vector(0, was, was));
+        EXPECT_EQ(s.torque[k], vector(was, 0, was));
+        EXPECT_EQ(s.fContact[k], vector(-was, 0, 0));
+        EXPECT_EQ(s.tContact[k], vector(0, -was, 0));
+    }
+    EXPECT_EQ(s.globalId[3], 97);
+    EXPECT_EQ(s.x[3], point(3, 0, 0));
+}
+
 // ************************************************************************* //

@@ -17,6 +17,7 @@ License
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 const Foam::label Foam::demPartition::maxRowsPerMessage;
+const Foam::scalar Foam::demPartition::maxContactWeight = 10;
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -319,11 +320,17 @@ void Foam::demPartition::updateWeight()
     Pstream::listCombineGather(step, plusEqOp<scalar>());
     Pstream::listCombineScatter(step);
 
-    if (step[0] > 0 && step[1] > 0 && step[2] > 0 && step[3] > 0)
+    // Measured only with at least one contact per ten rows: the contact
+    // time also holds the near pairs' checks, which with few contacts
+    // would make the time per contact (and w) huge (237 in the first
+    // steps of the full-size inhaler's bed)
+    if (step[0] > 0 && step[1] > 0 && step[3] > 0 && step[2] >= 0.1*step[3])
     {
-        // Time per contact over time per row; smoothed, so that the timers'
-        // noise does not move the cut every step
-        const scalar w = (step[0]/step[2])/(step[1]/step[3]);
+        // Time per contact over time per row, at most maxContactWeight;
+        // smoothed, so that the timers' noise does not move the cut every
+        // step
+        const scalar w =
+            min((step[0]/step[2])/(step[1]/step[3]), maxContactWeight);
         contactWeight_ =
             nWeightSamples_ ? 0.8*contactWeight_ + 0.2*w : w;
         ++nWeightSamples_;
@@ -693,6 +700,43 @@ void Foam::demPartition::distribute
     // The histories are the engine's now (adopt); collect hands them back
     keys.clear();
     xi.clear();
+
+    // The rows in increasing globalId. The pair sweep visits the pairs in
+    // the globalId order of their first row (for sums in a fixed order),
+    // so rows in that order are read one after the other, and a bed
+    // numbered along a space-filling curve (`order morton` at injection)
+    // has every row's partners near it in memory. The blocks above are in
+    // the source processors' order, each in its mesh order, which parcels
+    // crossing processors leave unsorted. (Results do not depend on the
+    // row order.)
+    {
+        const SubList<label> ids(dem_.globalId, nOwned);
+        labelList order;
+        sortedOrder(ids, order);
+        bool sorted = true;
+        forAll(order, k)
+        {
+            if (order[k] != k)
+            {
+                sorted = false;
+                break;
+            }
+        }
+        if (!sorted)
+        {
+            dem_.reorder(order);
+            fromProc_ = labelList(UIndirectList<label>(fromProc_, order));
+            fromRow_ = labelList(UIndirectList<label>(fromRow_, order));
+            for (vectorField& col : vecCols_)
+            {
+                col = vectorField(UIndirectList<vector>(col, order));
+            }
+            for (scalarField& col : scaCols_)
+            {
+                col = scalarField(UIndirectList<scalar>(col, order));
+            }
+        }
+    }
 
     halo_.build(dem_, reach_, &engine_);
 

@@ -45,6 +45,21 @@ namespace Foam
         }
     };
 
+    struct demStateReorder
+    {
+        const labelUList& order;
+
+        template<class T>
+        void operator()(DynamicList<T>& c) const
+        {
+            const List<T> rows(UIndirectList<T>(c, order));
+            forAll(rows, k)
+            {
+                c[k] = rows[k];
+            }
+        }
+    };
+
     struct demStateReserve
     {
         label n;
@@ -79,6 +94,12 @@ void Foam::demState::resize(const label n)
 {
     reserve(n);
     forEachColumn(demStateResize{n});
+}
+
+
+void Foam::demState::reorder(const labelUList& order)
+{
+    forEachColumn(demStateReorder{order});
 }
 
 
