@@ -38,12 +38,8 @@ Foam::parcelBalance::parcelBalance(const fileName& dir)
 :
     file_(nullptr),
     nSamples_(0),
-    sumParcelRatio_(0),
-    maxParcelRatio_(0),
-    sumRowRatio_(0),
-    maxRowRatio_(0),
-    sumContactRatio_(0),
-    maxContactRatio_(0)
+    sumRatio_(Zero),
+    maxRatio_(Zero)
 {
     if (Pstream::parRun() && Pstream::master())
     {
@@ -73,56 +69,51 @@ Foam::scalar Foam::parcelBalance::sample
         return 1;
     }
 
-    List<FixedList<label, 3>> counts(Pstream::nProcs());
-    FixedList<label, 3>& mine = counts[Pstream::myProcNo()];
-    mine[0] = nOwned;
-    mine[1] = nRows;
-    mine[2] = nContacts;
+    List<FixedList<label, nCounts>> counts(Pstream::nProcs());
+    FixedList<label, nCounts>& mine = counts[Pstream::myProcNo()];
+    mine[parcels] = nOwned;
+    mine[rows] = nRows;
+    mine[contacts] = nContacts;
     Pstream::gatherList(counts);
     Pstream::scatterList(counts);
 
-    labelField parcels(counts.size());
-    labelField rows(counts.size());
-    labelField contacts(counts.size());
-    forAll(counts, proci)
-    {
-        parcels[proci] = counts[proci][0];
-        rows[proci] = counts[proci][1];
-        contacts[proci] = counts[proci][2];
-    }
-    const scalar parcelRatio = maxOverMean(parcels);
-    const scalar rowRatio = maxOverMean(rows);
-    const scalar contactRatio = maxOverMean(contacts);
-
+    // Per count: its value on every processor and its max/mean
+    FixedList<labelField, nCounts> perProc;
+    FixedList<scalar, nCounts> ratio;
     ++nSamples_;
-    sumParcelRatio_ += parcelRatio;
-    maxParcelRatio_ = max(maxParcelRatio_, parcelRatio);
-    sumRowRatio_ += rowRatio;
-    maxRowRatio_ = max(maxRowRatio_, rowRatio);
-    sumContactRatio_ += contactRatio;
-    maxContactRatio_ = max(maxContactRatio_, contactRatio);
+    forAll(perProc, c)
+    {
+        perProc[c].setSize(counts.size());
+        forAll(counts, proci)
+        {
+            perProc[c][proci] = counts[proci][c];
+        }
+        ratio[c] = maxOverMean(perProc[c]);
+        sumRatio_[c] += ratio[c];
+        maxRatio_[c] = max(maxRatio_[c], ratio[c]);
+    }
 
     if (file_.valid())
     {
-        file_() << t
-            << ' ' << min(parcels) << ' ' << max(parcels)
-            << ' ' << scalar(sum(parcels))/parcels.size()
-            << ' ' << parcelRatio
-            << ' ' << min(rows) << ' ' << max(rows)
-            << ' ' << scalar(sum(rows))/rows.size()
-            << ' ' << rowRatio
-            << ' ' << min(contacts) << ' ' << max(contacts)
-            << ' ' << scalar(sum(contacts))/contacts.size()
-            << ' ' << contactRatio << endl;
+        file_() << t;
+        forAll(perProc, c)
+        {
+            const labelField& n = perProc[c];
+            file_()
+                << ' ' << min(n) << ' ' << max(n)
+                << ' ' << scalar(sum(n))/n.size()
+                << ' ' << ratio[c];
+        }
+        file_() << endl;
     }
 
-    Info<< "    DEM load: parcels per processor " << min(parcels) << " to "
-        << max(parcels) << ", max/mean " << parcelRatio
-        << "; with halo copies max/mean " << rowRatio
-        << "; pair contacts " << min(contacts) << " to " << max(contacts)
-        << ", max/mean " << contactRatio << nl;
+    Info<< "    DEM load: parcels per processor " << min(perProc[parcels])
+        << " to " << max(perProc[parcels]) << ", max/mean " << ratio[parcels]
+        << "; with halo copies max/mean " << ratio[rows]
+        << "; pair contacts " << min(perProc[contacts]) << " to "
+        << max(perProc[contacts]) << ", max/mean " << ratio[contacts] << nl;
 
-    return parcelRatio;
+    return ratio[parcels];
 }
 
 
@@ -134,11 +125,11 @@ void Foam::parcelBalance::summary(Ostream& os) const
     }
     os  << "DEM load balance over " << nSamples_ << " fluid steps on "
         << Pstream::nProcs() << " processors: parcels max/mean "
-        << sumParcelRatio_/nSamples_ << " on average, "
-        << maxParcelRatio_ << " at worst; with halo copies "
-        << sumRowRatio_/nSamples_ << " on average, " << maxRowRatio_
-        << " at worst; pair contacts " << sumContactRatio_/nSamples_
-        << " on average, " << maxContactRatio_ << " at worst" << endl;
+        << sumRatio_[parcels]/nSamples_ << " on average, "
+        << maxRatio_[parcels] << " at worst; with halo copies "
+        << sumRatio_[rows]/nSamples_ << " on average, " << maxRatio_[rows]
+        << " at worst; pair contacts " << sumRatio_[contacts]/nSamples_
+        << " on average, " << maxRatio_[contacts] << " at worst" << endl;
 }
 
 
