@@ -300,6 +300,69 @@ TEST(demNeighbourSearch, historyRestartRoundTrip)
 }
 
 
+// A row in no listed pair and beyond its reach plus the skin of every wall
+// cannot touch anything before the next search, so the near list does not
+// follow it (pairContacts::tracked_): a fast ball far from the pile must
+// neither size the near skin nor trigger near builds, and must leave the
+// pile's trajectories as they are to the bit. Balls falling onto the floor
+// from out of the walls' skin must still meet it: the search that sees them
+// within reach puts them back under the near list, so their bounce is that
+// of a run whose skin holds everything (EXPECT_EQ on doubles).
+TEST(demNeighbourSearch, isolatedFastRowSetsNoNearPace)
+{
+    FatalError.throwExceptions();
+    FatalIOError.throwExceptions();
+
+    const scalar m = 2400*constant::mathematical::pi/6*pow3(2e-3);
+    const vector g(0, 0, -9.81);
+    const scalar Dt = 500*1e-5;
+
+    // The pile alone, and with a ball 50 mm away crossing at 0.8 m/s
+    // (4 mm in the run: below half the 10 mm skin, so no new search)
+    demEngine a(pileDeck("1e-2"));
+    demEngine b(pileDeck("1e-2"));
+    demState sa(pile());
+    demState sb(pile());
+    sb.append(point(0.05, 0.05, 0.02), vector(0.8, 0, 0), Zero, 1e-3, m, 1, 0,
+              1000);
+    a.evolve(sa, Dt, g);
+    b.evolve(sb, Dt, g);
+
+    EXPECT_EQ(a.neighbours().nBuilds(), b.neighbours().nBuilds());
+    EXPECT_EQ(a.nNearBuilds(), b.nNearBuilds());
+    for (label i = 0; i < sa.size(); ++i)
+    {
+        EXPECT_EQ(sa.x[i], sb.x[i]);
+        EXPECT_EQ(sa.v[i], sb.v[i]);
+        EXPECT_EQ(sa.omega[i], sb.omega[i]);
+    }
+
+    // Balls far from the pile falling onto the floor at 2.5 m/s: one
+    // within the walls' reach plus skin at the start (centre 7 mm up), one
+    // beyond it (12 mm up; the search after it has fallen half the skin
+    // finds the floor). With skin 0.1 m every ball is followed throughout.
+    demEngine c(pileDeck("1e-2"));
+    demEngine d(pileDeck("1e-1"));
+    demState sc(pile());
+    sc.append(point(0.05, 0.0, 0.007), vector(0, 0, -2.5), Zero, 1e-3, m, 1, 0,
+              1001);
+    sc.append(point(0.0, 0.05, 0.012), vector(0, 0, -2.5), Zero, 1e-3, m, 1, 0,
+              1002);
+    demState sd(sc);
+    c.evolve(sc, Dt, g);
+    d.evolve(sd, Dt, g);
+
+    for (label i = sc.size() - 2; i < sc.size(); ++i)
+    {
+        // Bounced: the floor was met
+        EXPECT_GT(sc.v[i].z(), 0) << "ball " << sc.globalId[i];
+        EXPECT_EQ(sc.x[i], sd.x[i]);
+        EXPECT_EQ(sc.v[i], sd.v[i]);
+        EXPECT_EQ(sc.omega[i], sd.omega[i]);
+    }
+}
+
+
 // ************************************************************************* //
 
 

@@ -109,6 +109,11 @@ void Foam::demEngine::rebuild(const demState& s)
     const scalar rMax = s.maxRadius();
 
     pairs_.build(s, models_, models_.maxRange(rMax));
+    walls_.markNearWalls
+    (
+        s, models_, rMax, models_.maxRange(rMax), pairs_.search().skin(),
+        pairs_.tracked()
+    );
     history_.load(s.globalId);
     buildNear(s);
 
@@ -125,7 +130,8 @@ void Foam::demEngine::buildNear(const demState& s)
     const scalar rMax = s.maxRadius();
     walls_.findCandidates
     (
-        s, models_, rMax, models_.maxRange(rMax), pairs_.nearSkin()
+        s, models_, rMax, models_.maxRange(rMax), pairs_.nearSkin(),
+        pairs_.tracked()
     );
 }
 

@@ -119,6 +119,17 @@ void Foam::pairContacts::build
         );
     }
 
+    tracked_.setSize(n);
+    tracked_ = false;
+    for (label a = 0; a < nRows; ++a)
+    {
+        tracked_[pairRow_[a]] = true;
+        for (label k = pairStart_[a]; k < pairStart_[a + 1]; ++k)
+        {
+            tracked_[pairJ_[k]] = true;
+        }
+    }
+
     models_ = &models;
     range_ = range;
 
@@ -128,7 +139,12 @@ void Foam::pairContacts::build
 
 bool Foam::pairContacts::nearValid(const demState& s) const
 {
-    if (!nearCurrent_ || nearX0_.size() != s.size())
+    if
+    (
+        !nearCurrent_
+     || nearX0_.size() != s.size()
+     || tracked_.size() != s.size()
+    )
     {
         return false;
     }
@@ -136,7 +152,7 @@ bool Foam::pairContacts::nearValid(const demState& s) const
     const scalar maxMove2 = sqr(0.5*nearSkin_);
     forAll(nearX0_, p)
     {
-        if (magSqr(s.x[p] - nearX0_[p]) > maxMove2)
+        if (tracked_[p] && magSqr(s.x[p] - nearX0_[p]) > maxMove2)
         {
             return false;
         }
@@ -219,9 +235,12 @@ void Foam::pairContacts::buildNear
 
     const scalar skin = search_.skin();
     scalar v2Max = 0;
-    for (const vector& v : s.v)
+    forAll(s.v, p)
     {
-        v2Max = max(v2Max, magSqr(v));
+        if (tracked_[p])
+        {
+            v2Max = max(v2Max, magSqr(s.v[p]));
+        }
     }
     nearSkin_ = min(skin, max(0.05*skin, 2*25*sqrt(v2Max)*dt));
 

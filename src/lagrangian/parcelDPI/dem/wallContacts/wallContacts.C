@@ -69,13 +69,54 @@ Foam::wallContacts::wallContacts
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+void Foam::wallContacts::markNearWalls
+(
+    const demState& s,
+    const contactModels& models,
+    const scalar rMax,
+    const scalar range,
+    const scalar skin,
+    List<bool>& tracked
+)
+{
+    if (walls_.empty())
+    {
+        return;
+    }
+
+    prepare(rMax + range + skin);
+
+    DynamicList<label> found;
+    forAll(s.x, p)
+    {
+        if (tracked[p])
+        {
+            continue;
+        }
+        const scalar rp = s.r[p];
+        const scalar query = rp + models.maxRange(rp) + skin;
+        forAll(walls_, w)
+        {
+            found.clear();
+            walls_[w].findCandidates(s.x[p], query, found);
+            if (found.size())
+            {
+                tracked[p] = true;
+                break;
+            }
+        }
+    }
+}
+
+
 void Foam::wallContacts::findCandidates
 (
     const demState& s,
     const contactModels& models,
     const scalar rMax,
     const scalar range,
-    const scalar skin
+    const scalar skin,
+    const List<bool>& tracked
 )
 {
     // Walls must see every sphere within its radius plus cohesion range,
@@ -95,7 +136,10 @@ void Foam::wallContacts::findCandidates
         forAll(walls_, w)
         {
             candStart_[p*nWalls + w] = cand_.size();
-            walls_[w].findCandidates(s.x[p], query, cand_);
+            if (tracked[p])
+            {
+                walls_[w].findCandidates(s.x[p], query, cand_);
+            }
         }
         if (cand_.size() > start)
         {
