@@ -348,9 +348,10 @@ Foam::demPartition::demPartition
 )
 :
     engine_(engine),
-    maxImbalance_(1.1),
+    // Set by readSettings below (its defaults: one place)
+    maxImbalance_(0),
     contactWeight_(0),
-    autoWeight_(true),
+    autoWeight_(false),
     timeContacts0_(0),
     timeRows0_(0),
     nWeightSamples_(0),
@@ -710,20 +711,18 @@ void Foam::demPartition::distribute
     // crossing processors leave unsorted. (Results do not depend on the
     // row order.)
     {
+        // Often already in order (a settled bed whose rows stayed with
+        // their processors): one pass decides, the sort only if not
         const SubList<label> ids(dem_.globalId, nOwned);
-        labelList order;
-        sortedOrder(ids, order);
         bool sorted = true;
-        forAll(order, k)
+        for (label k = 1; k < nOwned && sorted; ++k)
         {
-            if (order[k] != k)
-            {
-                sorted = false;
-                break;
-            }
+            sorted = ids[k - 1] < ids[k];
         }
         if (!sorted)
         {
+            labelList order;
+            sortedOrder(ids, order);
             dem_.reorder(order);
             fromProc_ = labelList(UIndirectList<label>(fromProc_, order));
             fromRow_ = labelList(UIndirectList<label>(fromRow_, order));
