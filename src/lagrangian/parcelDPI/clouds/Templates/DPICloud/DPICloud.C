@@ -207,6 +207,21 @@ void Foam::DPICloud<CloudType>::setModels()
             << "# time kineticEnergy[J] rotationalEnergy[J] nPairContacts"
             << " nWallContacts maxOverlap/R* nParcels" << nl;
 
+        const fileName perfDir
+        (
+            time.globalPath()/"postProcessing"/this->name()/"demPerformance"
+           /time.timeName()
+        );
+        mkDir(perfDir);
+        perfFile_.reset(new OFstream(perfDir/"demPerformance.dat"));
+        perfFile_().precision(8);
+        perfFile_()
+            << "# DEM cost on the master processor at the end of every"
+            << " fluid step: wall-clock seconds since this run started,"
+            << " summed (as the log's DEM performance line)" << nl
+            << "# time subSteps pair wall neighbour integrate haloExchange"
+            << " subStepFluidForces searches nearBuilds" << nl;
+
         if (engine_->contactStats())
         {
             const fileName statsDir
@@ -877,6 +892,18 @@ void Foam::DPICloud<CloudType>::writeDiagnostics()
             << ' ' << nParcels << endl;
     }
 
+    if (perfFile_.valid())
+    {
+        const demEngine& e = engine_();
+        perfFile_()
+            << this->db().time().value() << ' ' << e.nSteps()
+            << ' ' << e.timePair() << ' ' << e.timeWall()
+            << ' ' << e.timeNeighbour() << ' ' << e.timeIntegrate()
+            << ' ' << e.timeHalo() << ' ' << e.timeExternal()
+            << ' ' << e.neighbours().nBuilds() << ' ' << e.nNearBuilds()
+            << endl;
+    }
+
     if (const contactStatistics* stats = engine_->contactStats())
     {
         // collective: every processor's counts go to the master
@@ -949,6 +976,7 @@ Foam::DPICloud<CloudType>::DPICloud
     observer_(nullptr),
     trace_(nullptr),
     diagFile_(nullptr),
+    perfFile_(nullptr),
     statsFile_(nullptr),
     agglomerates_(nullptr),
     halo_(nullptr),
@@ -994,6 +1022,7 @@ Foam::DPICloud<CloudType>::DPICloud
     observer_(nullptr),
     trace_(nullptr),
     diagFile_(nullptr),
+    perfFile_(nullptr),
     statsFile_(nullptr),
     agglomerates_(nullptr),
     halo_(nullptr),
@@ -1027,6 +1056,7 @@ Foam::DPICloud<CloudType>::DPICloud
     observer_(nullptr),
     trace_(nullptr),
     diagFile_(nullptr),
+    perfFile_(nullptr),
     statsFile_(nullptr),
     agglomerates_(nullptr),
     halo_(nullptr),
