@@ -15,9 +15,13 @@ loop (writing, function objects) and the total. The tools' logs (OpenFOAM
 utilities: blockMesh, decomposePar, reconstructPar, foamToVTK) add their
 ClockTime. A log without a Cost line (a run stopped, then resumed from its
 last write: Allrun -resume) gives a row "(stopped)" with its last ClockTime
-only. Prints the table and writes it to --output.
+and the DEM terms of its last fluid step from the case's
+postProcessing/<cloud>/demPerformance/<its start time>/demPerformance.dat
+(the start-up, gas and the rest are not known for it). Prints the table and
+writes it to --output.
 """
 import argparse
+import glob
 import os
 import re
 import sys
@@ -38,6 +42,30 @@ COST = re.compile(r"^Cost \(wall-clock s, this process\): start-up " + NUM +
                   r", the rest \(writing, function objects\) " + NUM +
                   r", total " + NUM)
 CLOCK = re.compile(r"ClockTime = " + NUM)
+
+
+START = re.compile(r"^Create mesh for time = (\S+)", re.M)
+PERF_COLS = ("pair", "wall", "neighbour", "integrate", "halo", "subStepGas")
+
+
+def stoppedDem(path, text):
+    """The DEM terms of a stopped run: the last row of the demPerformance
+    series its start wrote (columns: time, sub-steps, then PERF_COLS), or
+    nothing if there is none"""
+    start = START.findall(text)
+    if not start:
+        return {}
+    case = os.path.dirname(os.path.abspath(path))
+    found = glob.glob(os.path.join(case, "postProcessing", "*",
+                                   "demPerformance", start[0],
+                                   "demPerformance.dat"))
+    if len(found) != 1:
+        return {}
+    rows = [line.split() for line in open(found[0])
+            if line.strip() and not line.startswith("#")]
+    if not rows:
+        return {}
+    return {k: float(v) for k, v in zip(PERF_COLS, rows[-1][2:8])}
 
 
 def stage(path):
@@ -61,7 +89,9 @@ def stage(path):
         if not clocks:
             sys.exit("runCost.py: no 'Cost' line and no ClockTime in %s"
                      % path)
-        return dict(total=float(clocks[-1]), stopped=True)
+        row = dict(total=float(clocks[-1]), stopped=True)
+        row.update(stoppedDem(path, text))
+        return row
     startUp, gas, cloud, rest, total = cost
     engine = sum(dem.values())
     row = dict(startUp=startUp, gas=gas, cloud=cloud, rest=rest,
@@ -99,7 +129,8 @@ for path in a.logs:
         else name
     if r.get("stopped"):
         out.append("| %s (stopped) | %.4g | " % (name, r["total"])
-                   + " | ".join("-" for _ in cols[1:]) + " |")
+                   + " | ".join("%.4g" % r[k] if k in r else "-"
+                                for k, _ in cols[1:]) + " |")
         continue
     out.append("| %s | " % name + " | ".join(
         "%.4g (%.0f %%)" % (r.get(k, 0.0), 100*r.get(k, 0.0)/r["total"])
