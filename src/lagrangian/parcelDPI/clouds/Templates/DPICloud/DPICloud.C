@@ -193,28 +193,28 @@ void Foam::DPICloud<CloudType>::setModels()
 
     if (Pstream::master())
     {
+        // postProcessing/<cloud>/<name>/<startTime>/<name>.dat
         const Time& time = this->mesh().time();
-        const fileName dir
-        (
-            time.globalPath()/"postProcessing"/this->name()/"demDiagnostics"
-           /time.timeName()
-        );
-        mkDir(dir);
-        diagFile_.reset(new OFstream(dir/"demDiagnostics.dat"));
-        diagFile_().precision(10);
+        auto series = [&](const word& name, const label digits)
+        {
+            const fileName dir
+            (
+                time.globalPath()/"postProcessing"/this->name()/name
+               /time.timeName()
+            );
+            mkDir(dir);
+            autoPtr<OFstream> file(new OFstream(dir/(name + ".dat")));
+            file().precision(digits);
+            return file;
+        };
+
+        diagFile_ = series("demDiagnostics", 10);
         diagFile_()
             << "# DEM diagnostics at the end of every fluid step" << nl
             << "# time kineticEnergy[J] rotationalEnergy[J] nPairContacts"
             << " nWallContacts maxOverlap/R* nParcels" << nl;
 
-        const fileName perfDir
-        (
-            time.globalPath()/"postProcessing"/this->name()/"demPerformance"
-           /time.timeName()
-        );
-        mkDir(perfDir);
-        perfFile_.reset(new OFstream(perfDir/"demPerformance.dat"));
-        perfFile_().precision(8);
+        perfFile_ = series("demPerformance", 8);
         perfFile_()
             << "# DEM cost on the master processor at the end of every"
             << " fluid step: wall-clock seconds since this run started,"
@@ -224,14 +224,7 @@ void Foam::DPICloud<CloudType>::setModels()
 
         if (engine_->contactStats())
         {
-            const fileName statsDir
-            (
-                time.globalPath()/"postProcessing"/this->name()
-               /"contactStatistics"/time.timeName()
-            );
-            mkDir(statsDir);
-            statsFile_.reset(new OFstream(statsDir/"contactStatistics.dat"));
-            statsFile_().precision(10);
+            statsFile_ = series("contactStatistics", 10);
             engine_->contactStats()->writeHeader(statsFile_());
         }
     }
