@@ -12,6 +12,10 @@ The DEM engine ends a run with two lines (demEngine::writePerformance):
 demPerformance() reads the last such pair of lines term by term, so a term
 the engine does not print (no halo in a serial run, no sub-step forces
 without a fluid) reads as 0 and a term added later does not break it.
+
+The same timers, so far, at the end of every fluid step are the series
+postProcessing/<cloud>/demPerformance/<start>/demPerformance.dat;
+demPerformanceSeries() reads one, its columns named as TERMS' keys.
 """
 import re
 
@@ -55,3 +59,25 @@ def demPerformance(text):
         out[key] = kind(t.group(group)) if t else kind(0)
     out["engine"] = sum(out[k] for k in ENGINE)
     return out
+
+
+# The series' column names (its header) as TERMS' keys
+SERIES_NAMES = {"subSteps": "steps", "haloExchange": "halo",
+                "subStepFluidForces": "subStepGas", "searches": "builds"}
+
+
+def demPerformanceSeries(path):
+    """A demPerformance.dat as a dict of columns (lists of floats) keyed as
+    TERMS (plus "time" and "steps"), from the names of its last header
+    line; columns are empty if it has no row yet"""
+    names, rows = None, []
+    with open(path) as f:
+        for line in f:
+            if line.startswith("#"):
+                names = line[1:].split()
+            elif line.strip():
+                rows.append([float(v) for v in line.split()])
+    if names is None:
+        raise ValueError("%s: no header line" % path)
+    keys = [SERIES_NAMES.get(n, n) for n in names]
+    return {k: [r[i] for r in rows] for i, k in enumerate(keys)}

@@ -26,6 +26,13 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import dpiLog  # noqa: E402
+
+# The series' columns in the order used below (dpiLog's names), and the
+# six cost terms' labels
+COLS = ["time", "steps", "pair", "wall", "neighbour", "integrate", "halo",
+        "subStepGas", "builds", "nearBuilds"]
 TERMS = ["pair", "wall", "neighbour", "integrate", "halo exchange",
          "sub-step gas forces"]
 
@@ -49,10 +56,10 @@ if not files:
 segments = []
 for f in files:
     start = float(os.path.basename(os.path.dirname(f)))
-    rows = np.loadtxt(f, ndmin=2)
-    if rows.size == 0:
+    series = dpiLog.demPerformanceSeries(f)
+    if not series["time"]:
         continue
-    # columns: time, sub-steps, the six terms, searches, near builds;
+    rows = np.array([series[c] for c in COLS]).T
     # the first row's increments are from the run's start (all 0 then)
     prev = np.concatenate([[start], np.zeros(rows.shape[1] - 1)])
     full = np.vstack([prev, rows])

@@ -45,13 +45,12 @@ CLOCK = re.compile(r"ClockTime = " + NUM)
 
 
 START = re.compile(r"^Create mesh for time = (\S+)", re.M)
-PERF_COLS = ("pair", "wall", "neighbour", "integrate", "halo", "subStepGas")
+DEM_TERMS = ("pair", "wall", "neighbour", "integrate", "halo", "subStepGas")
 
 
 def stoppedDem(path, text):
     """The DEM terms of a stopped run: the last row of the demPerformance
-    series its start wrote (columns: time, sub-steps, then PERF_COLS), or
-    nothing if there is none"""
+    series its start wrote, or nothing if there is none"""
     start = START.findall(text)
     if not start:
         return {}
@@ -61,11 +60,10 @@ def stoppedDem(path, text):
                                    "demPerformance.dat"))
     if len(found) != 1:
         return {}
-    rows = [line.split() for line in open(found[0])
-            if line.strip() and not line.startswith("#")]
-    if not rows:
+    series = dpiLog.demPerformanceSeries(found[0])
+    if not series["time"]:
         return {}
-    return {k: float(v) for k, v in zip(PERF_COLS, rows[-1][2:8])}
+    return {k: series[k][-1] for k in DEM_TERMS}
 
 
 def stage(path):
@@ -80,8 +78,7 @@ def stage(path):
         if m:
             cost = [float(x) for x in m.groups()]
     perf = dpiLog.demPerformance(text) or {}
-    dem = {k: perf.get(k, 0.0) for k in
-           ("pair", "wall", "neighbour", "integrate", "halo", "subStepGas")}
+    dem = {k: perf.get(k, 0.0) for k in DEM_TERMS}
     if cost is None:
         # A run that was stopped (then resumed from its last write): only
         # its wall time up to its last fluid step is known
