@@ -93,8 +93,7 @@ void Foam::wallContacts::markNearWalls
         {
             continue;
         }
-        const scalar rp = s.r[p];
-        const scalar query = rp + models.maxRange(rp) + skin;
+        const scalar query = searchReach(s.r[p], models, skin);
         forAll(walls_, w)
         {
             found.clear();
@@ -130,8 +129,7 @@ void Foam::wallContacts::findCandidates
     cand_.clear();
     for (label p = 0; p < n; ++p)
     {
-        const scalar rp = s.r[p];
-        const scalar query = rp + models.maxRange(rp) + skin;
+        const scalar query = searchReach(s.r[p], models, skin);
         const label start = cand_.size();
         forAll(walls_, w)
         {
