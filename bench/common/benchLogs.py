@@ -159,15 +159,33 @@ def liggghtsLog(path):
     return out
 
 
+def memPeaks(path):
+    """Peaks [kB] written by common/memsample.py: VmRSS, RssAnon, RssFile,
+    RssShmem."""
+    out = {}
+    with open(path) as f:
+        for line in f:
+            k, v = line.split()
+            out[k] = int(v)
+    return out
+
+
 def gnuTimes(case):
     """GNU time of every process of a run (case/time.0, time.1, ...):
-    summed peak RSS [kB], mean CPU [s], number of processes."""
+    summed peak RSS [kB], mean CPU [s], number of processes; and the summed
+    peak of the anonymous pages [kB] (case/mem.0, ...; NaN without them)."""
     ts = [gnuTime(p)
           for p in sorted(glob.glob(os.path.join(case, "time.[0-9]*")))]
     if not ts:
-        return dict(rss=float("nan"), cpu=float("nan"), n=0)
+        return dict(rss=float("nan"), cpu=float("nan"), n=0,
+                    anon=float("nan"))
+    ms = [memPeaks(p)
+          for p in sorted(glob.glob(os.path.join(case, "mem.[0-9]*")))]
+    anon = sum(m.get("RssAnon", float("nan")) for m in ms) \
+        if len(ms) == len(ts) else float("nan")
     return dict(rss=sum(t["maxRssKB"] for t in ts),
-                cpu=sum(t["cpuTime"] for t in ts)/len(ts), n=len(ts))
+                cpu=sum(t["cpuTime"] for t in ts)/len(ts), n=len(ts),
+                anon=anon)
 
 
 def machineLoad(case):

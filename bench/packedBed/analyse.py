@@ -30,6 +30,9 @@ have code "cohesive" (dpiFoam only). Columns:
                 of the run and of the empty case (the bed's first carrier
                 alone in the same box and mesh)
   *_kB_per_particle   (rss - empty rss) / N
+  *_anon_MB, *_empty_anon_MB, *_anon_kB_per_particle   the same with the
+                peak of the anonymous pages (common/memsample.py): the
+                processes' own data, without the shared libraries' pages
   dpi_setup_s   dpiFoam's set-up before the loop: ExecutionTime of the
                 first fluid step minus one loop step's (CPU)
   dpi_inject_s  dpi_setup_s - the empty case's: the cost of N particles in
@@ -64,7 +67,10 @@ COLUMNS = [
     "of_z_end", "dpi_KE", "lig_KE", "of_KE", "of_parcels_end",
     "dpi_rss_MB", "lig_rss_MB", "of_rss_MB", "dpi_empty_rss_MB",
     "lig_empty_rss_MB", "of_empty_rss_MB", "dpi_kB_per_particle",
-    "lig_kB_per_particle", "of_kB_per_particle", "dpi_setup_s",
+    "lig_kB_per_particle", "of_kB_per_particle", "dpi_anon_MB",
+    "lig_anon_MB", "of_anon_MB", "dpi_empty_anon_MB", "lig_empty_anon_MB",
+    "of_empty_anon_MB", "dpi_anon_kB_per_particle",
+    "lig_anon_kB_per_particle", "of_anon_kB_per_particle", "dpi_setup_s",
     "dpi_inject_s", "parcels", "api_attached", "api_detached",
     "dpi_runs", "lig_runs", "of_runs", "load_before",
 ]
@@ -190,6 +196,13 @@ def rows(base):
             r[k + "_empty_rss_MB"] = e["rss"]/1024 if e else NAN
             r[k + "_kB_per_particle"] = (x["tm"]["rss"] - e["rss"])/x["n"] \
                 if x and e else NAN
+            # The anonymous pages alone (common/memsample.py): the data
+            # that grows with the particles, without the shared libraries'
+            # pages whose residency moves between runs
+            r[k + "_anon_MB"] = x["tm"]["anon"]/1024 if x else NAN
+            r[k + "_empty_anon_MB"] = e["anon"]/1024 if e else NAN
+            r[k + "_anon_kB_per_particle"] = \
+                (x["tm"]["anon"] - e["anon"])/x["n"] if x and e else NAN
         d = b["dpi"]
         if d:
             r.update(dpi_engine_psps=d["engine"], dpi_pair_share=d["pairShare"],
@@ -274,17 +287,21 @@ def markdown(table, md):
                         g(f(r, "of_KE"), "%.4g")))
         fh.write("\n| carriers | np | peak RSS dpiFoam / LIGGGHTS / OpenFOAM "
                  "[MB] | empty case [MB] | kB per particle above the empty "
-                 "case | dpiFoam set-up [s CPU] | of which injection |\n")
-        fh.write("|---:|---:|---:|---:|---:|---:|---:|\n")
+                 "case | anonymous pages only: kB per particle above the "
+                 "empty case | dpiFoam set-up [s CPU] | of which injection "
+                 "|\n")
+        fh.write("|---:|---:|---:|---:|---:|---:|---:|---:|\n")
         for r in bed:
             fh.write("| %s | %s | %s / %s / %s | %s / %s / %s | "
-                     "%s / %s / %s | %s | %s |\n"
+                     "%s / %s / %s | %s / %s / %s | %s | %s |\n"
                      % ((r["N"], r["np"])
                         + tuple(g(f(r, k + "_rss_MB"), "%.0f")
                                 for k in ("dpi", "lig", "of"))
                         + tuple(g(f(r, k + "_empty_rss_MB"), "%.0f")
                                 for k in ("dpi", "lig", "of"))
                         + tuple(g(f(r, k + "_kB_per_particle"), "%.2f")
+                                for k in ("dpi", "lig", "of"))
+                        + tuple(g(f(r, k + "_anon_kB_per_particle"), "%.2f")
                                 for k in ("dpi", "lig", "of"))
                         + (g(f(r, "dpi_setup_s"), "%.2f"),
                            g(f(r, "dpi_inject_s"), "%.2f"))))
