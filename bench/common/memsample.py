@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """memsample.py OUT COMMAND...: run COMMAND and write to OUT the peaks of
-its resident memory, split as the kernel counts it (/proc/PID/status):
+the resident memory of the largest process below it, split as the kernel
+counts it (/proc/PID/status):
 
     VmRSS    kB   all resident pages (GNU time's "maximum resident set")
     RssAnon  kB   anonymous pages: the process's heap, stacks and maps,
@@ -13,9 +14,14 @@ memory figure, but on 2 processes at 2,000 particles its noise is larger
 than the figure: the shared libraries' pages that are mapped move by 5-10
 MB between runs of the same build (bench/README.md section 8, "Where the
 2-process memory figure's noise comes from"). The anonymous peak is the
-data that grows with the particles, without that noise. Sampled every
-5 ms for the first 2 s (a short run's peak), then every 50 ms (a poll
-reads one small file, about 30 us); the exit code is COMMAND's."""
+data that grows with the particles, without that noise.
+
+COMMAND is usually GNU time running the code (common/prepare's timed):
+the sampler stays outside it, so the CPU time GNU time reports is the
+code's alone. Each key's peak is the largest over the processes below
+the sampler (the code's). Sampled every 5 ms for the first 2 s (a short
+run's peak), then every 50 ms (a poll reads a few small files, about
+30 us each); the exit code is COMMAND's."""
 
 import subprocess
 import sys
@@ -24,15 +30,31 @@ import time
 KEYS = ("VmRSS", "RssAnon", "RssFile", "RssShmem")
 
 
+def descendants(pid):
+    """The processes below pid (children, their children, ...)."""
+    out, todo = [], [pid]
+    while todo:
+        p = todo.pop()
+        try:
+            with open("/proc/%d/task/%d/children" % (p, p)) as f:
+                kids = [int(k) for k in f.read().split()]
+        except (OSError, ValueError):
+            kids = []
+        out += kids
+        todo += kids
+    return out
+
+
 def sample(pid, peak):
-    try:
-        with open("/proc/%d/status" % pid) as f:
-            for line in f:
-                key = line.split(":", 1)[0]
-                if key in peak:
-                    peak[key] = max(peak[key], int(line.split()[1]))
-    except (OSError, ValueError, IndexError):
-        pass
+    for p in [pid] + descendants(pid):
+        try:
+            with open("/proc/%d/status" % p) as f:
+                for line in f:
+                    key = line.split(":", 1)[0]
+                    if key in peak:
+                        peak[key] = max(peak[key], int(line.split()[1]))
+        except (OSError, ValueError, IndexError):
+            pass
 
 
 def main():
