@@ -62,8 +62,15 @@ def dpiFoamLog(path):
     out["nFluid"] = len(exe)
     out["loopCpu"] = exe[-1] - exe[0] if len(exe) > 1 else float("nan")
     out["loopClock"] = clk[-1] - clk[0] if len(clk) > 1 else float("nan")
-    inj = re.findall(r"Injected (\d+) parcels", text)
-    out["injected"] = sum(int(x) for x in inj)
+    inj = re.findall(r"Injected (\d+) parcels(?: in " + FLOAT + " s)?", text)
+    out["injected"] = sum(int(n) for n, _ in inj)
+    # The injection's wall-clock time as logged since 2026-12-04 (nan in
+    # older logs): the particle lists read at start-up plus the injections
+    read = re.findall(r"injectors/\S+: read \d+ particles in " + FLOAT
+                      + " s", text)
+    out["injectTime"] = sum(float(t) for t in read) \
+        + sum(float(t) for _, t in inj) \
+        if inj and all(t for _, t in inj) else float("nan")
     lost = re.findall(r"lost through wall (\d+)", text)
     out["lostThroughWalls"] = int(lost[-1]) if lost else 0
     out["parallel"] = bool(re.search(r"^Exec\s*:.*-parallel", text, re.M))

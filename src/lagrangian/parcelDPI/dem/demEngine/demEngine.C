@@ -333,8 +333,9 @@ void Foam::demEngine::evolve
     // between one sub-step's second half kick and the next sub-step's
     // first half kick and drift, so both go in one pass over the rows
     // (each row's operations in the same order, so bit-identical): the
-    // rows are streamed once per sub-step instead of twice, a third less
-    // of the integration's memory traffic on a bed larger than the caches
+    // rows are read and written once per sub-step instead of twice, which
+    // counts on a bed larger than the caches (bench/packedBed, 50,000
+    // carriers: the integration term 22-27 % shorter)
     const bool fuse = !ext && !obs;
 
     // Whether this sub-step's first half kick and drift were done in the

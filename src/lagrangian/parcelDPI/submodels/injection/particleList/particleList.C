@@ -9,6 +9,7 @@ License
 #include "particleList.H"
 #include "IFstream.H"
 #include "OSspecific.H"
+#include "clockTime.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -77,6 +78,11 @@ Foam::dpiInjectionModels::particleList::readParticles
     const dictionary& dict
 )
 {
+    // Timed for the log: with the injection's line it is the whole cost
+    // of a particle list (the set-up figure of a run holds it among the
+    // mesh, the fields and the first fluid step)
+    const clockTime timer;
+
     const word type(dict.get<word>("particleType"));
     const List<point> x(readList<point>(dict, "positions", true));
     const List<vector> U(readList<vector>(dict, "velocities", false));
@@ -114,6 +120,10 @@ Foam::dpiInjectionModels::particleList::readParticles
         p.type = type;
         p.d = d.size() ? d[i] : -1;
     }
+
+    Info<< "    injectors/" << name << ": read " << x.size()
+        << " particles in " << timer.elapsedTime() << " s" << endl;
+
     return particles;
 }
 
