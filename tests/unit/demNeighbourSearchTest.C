@@ -206,6 +206,31 @@ demState pile()
     return s;
 }
 
+// Row i of sa (engine ea) and row j of sb (engine eb) hold the same
+// particle in the same state, to the bit, with the same contact history
+void expectSameRow
+(
+    const demEngine& ea,
+    const demState& sa,
+    const label i,
+    const demEngine& eb,
+    const demState& sb,
+    const label j
+)
+{
+    ASSERT_EQ(sa.globalId[i], sb.globalId[j]);
+    EXPECT_EQ(sa.x[i], sb.x[j]);
+    EXPECT_EQ(sa.v[i], sb.v[j]);
+    EXPECT_EQ(sa.omega[i], sb.omega[j]);
+
+    DynamicList<label> ka, kb;
+    DynamicList<vector> xa, xb;
+    ea.history(sa.globalId[i], ka, xa);
+    eb.history(sb.globalId[j], kb, xb);
+    EXPECT_EQ(ka, kb);
+    EXPECT_EQ(xa, xb);
+}
+
 } // End anonymous namespace
 
 
@@ -247,18 +272,7 @@ TEST(demNeighbourSearch, historySurvivesRowReordering)
 
     for (label i = 0; i < sa.size(); ++i)
     {
-        const label j = order.find(i);
-        ASSERT_EQ(shuffled.globalId[j], sa.globalId[i]);
-        EXPECT_EQ(shuffled.x[j], sa.x[i]);
-        EXPECT_EQ(shuffled.v[j], sa.v[i]);
-        EXPECT_EQ(shuffled.omega[j], sa.omega[i]);
-
-        DynamicList<label> ka, kb;
-        DynamicList<vector> xa, xb;
-        a.history(sa.globalId[i], ka, xa);
-        b.history(sa.globalId[i], kb, xb);
-        EXPECT_EQ(ka, kb);
-        EXPECT_EQ(xa, xb);
+        expectSameRow(a, sa, i, b, shuffled, order.find(i));
     }
     EXPECT_EQ(a.nHistory(), b.nHistory());
 }
@@ -398,18 +412,10 @@ TEST(demNeighbourSearch, resultIndependentOfSkin)
     {
         const demState& a = states[0];
         const demState& b = states[e];
+        SCOPED_TRACE("skin " + skins[e]);
         for (label i = 0; i < a.size(); ++i)
         {
-            EXPECT_EQ(a.x[i], b.x[i]) << "skin " << skins[e];
-            EXPECT_EQ(a.v[i], b.v[i]) << "skin " << skins[e];
-            EXPECT_EQ(a.omega[i], b.omega[i]) << "skin " << skins[e];
-
-            DynamicList<label> ka, kb;
-            DynamicList<vector> xa, xb;
-            engines[0].history(a.globalId[i], ka, xa);
-            engines[e].history(a.globalId[i], kb, xb);
-            EXPECT_EQ(ka, kb);
-            EXPECT_EQ(xa, xb);
+            expectSameRow(engines[0], a, i, engines[e], b, i);
         }
         EXPECT_EQ(engines[0].nHistory(), engines[e].nHistory());
     }
@@ -469,17 +475,8 @@ TEST(demNeighbourSearch, fusedKickBitIdentical)
     );
     for (label i = 0; i < fused.size(); ++i)
     {
-        EXPECT_EQ(fused.x[i], split.x[i]);
-        EXPECT_EQ(fused.v[i], split.v[i]);
-        EXPECT_EQ(fused.omega[i], split.omega[i]);
+        expectSameRow(a, fused, i, b, split, i);
         EXPECT_EQ(fused.f[i], split.f[i]);
         EXPECT_EQ(fused.torque[i], split.torque[i]);
-
-        DynamicList<label> ka, kb;
-        DynamicList<vector> xa, xb;
-        a.history(fused.globalId[i], ka, xa);
-        b.history(split.globalId[i], kb, xb);
-        EXPECT_EQ(ka, kb);
-        EXPECT_EQ(xa, xb);
     }
 }
