@@ -329,21 +329,6 @@ void Foam::demEngine::evolve
 
     timeIntegrate_ += wallClock() - tc;
 
-    // Without sub-step forces or an observer nothing reads the rows
-    // between one sub-step's second half kick and the next sub-step's
-    // first half kick and drift, so both go in one pass over the rows
-    // (each row's operations in the same order, so bit-identical): the
-    // rows are read and written once per sub-step instead of twice, which
-    // counts on a bed larger than the caches (bench/packedBed, 50,000
-    // carriers: the integration term 22-27 % shorter)
-    const bool fuse = !ext && !obs;
-
-    // Whether this sub-step's first half kick and drift were done in the
-    // previous sub-step's pass, and the owned rows' largest squared move
-    // since the neighbour build measured there
-    bool kicked = false;
-    scalar maxMove2 = 0;
-
     for (label step = 0; step < nSub; ++step)
     {
         tc = wallClock();
@@ -377,33 +362,31 @@ void Foam::demEngine::evolve
         // have changed the rows) the owned rows are the particles of the
         // neighbour list's build, and their move since the build is
         // measured here, saving a pass over the rows in needsRebuild
-        const bool track = step > 0 && tracking(s);
+        const List<point>& x0 = pairs_.search().x0();
+        const bool track =
+            step > 0 && pairs_.search().valid() && x0.size() == s.size();
+        scalar maxMove2 = 0;
 
-        if (!kicked)
+        if (track)
         {
-            const List<point>& x0 = pairs_.search().x0();
-            maxMove2 = 0;
-            if (track)
+            for (label p = 0; p < n; ++p)
             {
-                for (label p = 0; p < n; ++p)
-                {
-                    const vector v(s.v[p] + halfStepV_[p]*kickForce(p));
-                    s.v[p] = v;
-                    s.omega[p] += halfStepOmega_[p]*s.torque[p];
-                    const point x(s.x[p] + dt*v);
-                    s.x[p] = x;
-                    maxMove2 = max(maxMove2, magSqr(x - x0[p]));
-                }
+                const vector v(s.v[p] + halfStepV_[p]*kickForce(p));
+                s.v[p] = v;
+                s.omega[p] += halfStepOmega_[p]*s.torque[p];
+                const point x(s.x[p] + dt*v);
+                s.x[p] = x;
+                maxMove2 = max(maxMove2, magSqr(x - x0[p]));
             }
-            else
+        }
+        else
+        {
+            for (label p = 0; p < n; ++p)
             {
-                for (label p = 0; p < n; ++p)
-                {
-                    const vector v(s.v[p] + halfStepV_[p]*kickForce(p));
-                    s.v[p] = v;
-                    s.omega[p] += halfStepOmega_[p]*s.torque[p];
-                    s.x[p] += dt*v;
-                }
+                const vector v(s.v[p] + halfStepV_[p]*kickForce(p));
+                s.v[p] = v;
+                s.omega[p] += halfStepOmega_[p]*s.torque[p];
+                s.x[p] += dt*v;
             }
         }
 
@@ -425,14 +408,8 @@ void Foam::demEngine::evolve
         tc = wallClock();
 
         // Total forces (as totalForces) and the second half kick in one
-        // pass over the rows; fused, the next sub-step's first half kick
-        // and drift in the same pass (as the pass above does them: the
-        // force is the one just stored)
-        const bool fuseNext = fuse && step + 1 < nSub;
-        const bool trackNext = fuseNext && tracking(s);
-        const List<point>& x0 = pairs_.search().x0();
+        // pass over the rows
         scalar Ek = 0, Er = 0;
-        maxMove2 = 0;
         for (label p = 0; p < n; ++p)
         {
             const scalar M = s.N[p]*s.m[p];
@@ -442,27 +419,11 @@ void Foam::demEngine::evolve
             s.torque[p] = t;
             const vector v(s.v[p] + halfStepV_[p]*f);
             const vector omega(s.omega[p] + halfStepOmega_[p]*t);
+            s.v[p] = v;
+            s.omega[p] = omega;
             Ek += 0.5*M*magSqr(v);
             Er += 0.5*(0.4*M*sqr(s.r[p]))*magSqr(omega);
-            if (fuseNext)
-            {
-                const vector vNext(v + halfStepV_[p]*f);
-                s.v[p] = vNext;
-                s.omega[p] = omega + halfStepOmega_[p]*t;
-                const point x(s.x[p] + dt*vNext);
-                s.x[p] = x;
-                if (trackNext)
-                {
-                    maxMove2 = max(maxMove2, magSqr(x - x0[p]));
-                }
-            }
-            else
-            {
-                s.v[p] = v;
-                s.omega[p] = omega;
-            }
         }
-        kicked = fuseNext;
         for (label p = n; p < s.size(); ++p)
         {
             s.f[p] = totalForce(s, p);
