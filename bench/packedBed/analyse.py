@@ -218,7 +218,7 @@ def rows(base):
             if cohesive:
                 r.update(api_attached=d["api"][0], api_detached=d["api"][1])
             empty = os.path.join(base, "dpiFoam-empty-np%d" % np_)
-            if d["injectTime"] == d["injectTime"]:
+            if not np.isnan(d["injectTime"]):
                 r["dpi_inject_s"] = d["injectTime"]
             elif os.path.isdir(empty):
                 r["dpi_inject_s"] = d["setup"] - dpiRun(empty)["setup"]

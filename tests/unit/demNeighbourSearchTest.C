@@ -420,4 +420,3 @@ TEST(demNeighbourSearch, resultIndependentOfSkin)
         EXPECT_EQ(engines[0].nHistory(), engines[e].nHistory());
     }
 }
-
