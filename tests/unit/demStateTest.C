@@ -8,6 +8,8 @@ License
 
 #include <gtest/gtest.h>
 #include "demState.H"
+#include "OStringStream.H"
+#include "IStringStream.H"
 
 using namespace Foam;
 
@@ -77,6 +79,75 @@ TEST(demState, reorderMovesWholeRows)
     }
     EXPECT_EQ(s.globalId[3], 97);
     EXPECT_EQ(s.x[3], point(3, 0, 0));
+}
+
+// The DEM partition takes the mesh rows over without a copy (transfer),
+// moves rows into the places of rows sent away (copyRow) and reads the
+// rows that arrive into given places (readRows): every column must follow
+namespace
+{
+    demState fourRows()
+    {
+        demState s;
+        for (label k = 0; k < 4; ++k)
+        {
+            s.append
+            (
+                point(k, 0, 0), vector(0, k, 0), vector(0, 0, k),
+                1e-6*(k + 1), 1e-12*(k + 1), k + 1, k % 2, 100 - k
+            );
+            s.fExt[k] = vector(k, k, 0);
+            s.fContact[k] = vector(-k, 0, 0);
+            s.tContact[k] = vector(0, -k, 0);
+        }
+        s.contactForcesValid = true;
+        return s;
+    }
+}
+
+
+TEST(demState, transferTakesRowsAndLeavesSourceEmpty)
+{
+    demState mesh(fourRows());
+    const point* data = mesh.x.cdata();
+    demState dem;
+    dem.transfer(mesh);
+
+    EXPECT_EQ(mesh.size(), 0);
+    EXPECT_EQ(mesh.fContact.size(), 0);
+    EXPECT_EQ(mesh.x.capacity(), 0);
+    EXPECT_FALSE(mesh.contactForcesValid);
+    ASSERT_EQ(dem.size(), 4);
+    EXPECT_EQ(dem.x.cdata(), data);     // the same storage: no copy
+    EXPECT_TRUE(dem.contactForcesValid);
+    EXPECT_EQ(dem.globalId[3], 97);
+    EXPECT_EQ(dem.tContact[2], vector(0, -2, 0));
+}
+
+
+TEST(demState, copyRowAndScatteredReadMoveWholeRows)
+{
+    demState s(fourRows());
+    s.copyRow(3, 1);
+    EXPECT_EQ(s.globalId[1], 97);
+    EXPECT_EQ(s.x[1], point(3, 0, 0));
+    EXPECT_EQ(s.fExt[1], vector(3, 3, 0));
+    EXPECT_EQ(s.tContact[1], vector(0, -3, 0));
+    EXPECT_DOUBLE_EQ(s.m[1], 4e-12);
+
+    // rows 0 and 2 written, read back into places 3 and 0
+    OStringStream os;
+    s.writeRows(os, labelList({0, 2}));
+    IStringStream is(os.str());
+    s.readRows(is, labelList({3, 0}));
+    EXPECT_EQ(s.globalId[3], 100);
+    EXPECT_EQ(s.x[3], point(0, 0, 0));
+    EXPECT_EQ(s.globalId[0], 98);
+    EXPECT_EQ(s.v[0], vector(0, 2, 0));
+    EXPECT_DOUBLE_EQ(s.N[0], 3);
+    // readRows sets the parcels' state; their forces start at zero
+    EXPECT_EQ(s.fContact[0], vector::zero);
+    EXPECT_EQ(s.size(), 4);
 }
 
 // ************************************************************************* //

@@ -16,7 +16,6 @@ License
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
-const Foam::label Foam::demPartition::maxRowsPerMessage;
 const Foam::scalar Foam::demPartition::maxContactWeight = 10;
 
 
@@ -254,10 +253,23 @@ void Foam::demPartition::readSettings
     const dictionary& demDict,
     scalar& maxImbalance,
     scalar& contactWeight,
-    bool& autoWeight
+    bool& autoWeight,
+    label& rowsPerMessage
 )
 {
     const dictionary lbDict(demDict.subOrEmptyDict("loadBalance"));
+
+    rowsPerMessage = lbDict.getOrDefault<label>("rowsPerMessage", 256);
+    if (rowsPerMessage < 1)
+    {
+        FatalIOErrorInFunction(demDict)
+            << "loadBalance/rowsPerMessage " << rowsPerMessage
+            << " in dictionary " << demDict.name() << " must be >= 1"
+            << " (parcels per processor pair in one round of the"
+            << " hand-over; default 256)"
+            << exit(FatalIOError);
+    }
+
     maxImbalance = lbDict.getOrDefault<scalar>("maxImbalance", 1.1);
     if (!(maxImbalance >= 1))
     {
@@ -313,7 +325,7 @@ void Foam::demPartition::updateWeight()
     step[0] = tContacts - timeContacts0_;
     step[1] = tRows - timeRows0_;
     step[2] = d.nPairContacts + d.nWallContacts;
-    step[3] = dem_.owned();
+    step[3] = nDemOwned_;
     timeContacts0_ = tContacts;
     timeRows0_ = tRows;
     // (gathered and scattered: every processor gets the same sums)
@@ -350,6 +362,7 @@ Foam::demPartition::demPartition
     engine_(engine),
     // Set by readSettings below (its defaults: one place)
     maxImbalance_(0),
+    rowsPerMessage_(0),
     contactWeight_(0),
     autoWeight_(false),
     timeContacts0_(0),
@@ -367,6 +380,9 @@ Foam::demPartition::demPartition
     agglomerateIds_(),
     fromProc_(),
     fromRow_(),
+    nMesh_(0),
+    nDemOwned_(0),
+    nDemRows_(0),
     halo_(mesh),
     keys_(nullptr),
     xi_(nullptr),
@@ -375,7 +391,10 @@ Foam::demPartition::demPartition
     vecCols_(),
     scaCols_()
 {
-    readSettings(dict, maxImbalance_, contactWeight_, autoWeight_);
+    readSettings
+    (
+        dict, maxImbalance_, contactWeight_, autoWeight_, rowsPerMessage_
+    );
 
     // The engine's history store is emptied after every fluid step
     // (collect): pairs of two halo copies need not be evaluated
@@ -406,11 +425,15 @@ bool Foam::demPartition::selected(const dictionary& demDict)
     // here so that bad input stops a serial run as well
     dictKeys::warnUnknown
     (
-        lbDict, {"type", "maxImbalance", "contactWeight"}
+        lbDict, {"type", "maxImbalance", "contactWeight", "rowsPerMessage"}
     );
     scalar maxImbalance, contactWeight;
     bool autoWeight;
-    readSettings(demDict, maxImbalance, contactWeight, autoWeight);
+    label rowsPerMessage;
+    readSettings
+    (
+        demDict, maxImbalance, contactWeight, autoWeight, rowsPerMessage
+    );
 
     const word type(lbDict.getOrDefault<word>("type", "rcb"));
     if (type != "rcb" && type != "none")
@@ -421,6 +444,38 @@ bool Foam::demPartition::selected(const dictionary& demDict)
             << "    valid types: 2(rcb none)" << exit(FatalIOError);
     }
     return Pstream::parRun() && type == "rcb";
+}
+
+
+void Foam::demPartition::copyRow(const label from, const label to)
+{
+    dem_.copyRow(from, to);
+    fromProc_[to] = fromProc_[from];
+    fromRow_[to] = fromRow_[from];
+    for (vectorField& col : vecCols_)
+    {
+        col[to] = col[from];
+    }
+    for (scalarField& col : scaCols_)
+    {
+        col[to] = col[from];
+    }
+}
+
+
+void Foam::demPartition::resizeRows(const label n)
+{
+    dem_.resize(n);
+    fromProc_.setSize(n);
+    fromRow_.setSize(n);
+    for (vectorField& col : vecCols_)
+    {
+        col.setSize(n);
+    }
+    for (scalarField& col : scaCols_)
+    {
+        col.setSize(n);
+    }
 }
 
 
@@ -445,7 +500,7 @@ void Foam::demPartition::inRounds
     }
     reduce(nMax, maxOp<label>());
 
-    for (label start = 0; start < nMax; start += maxRowsPerMessage)
+    for (label start = 0; start < nMax; start += rowsPerMessage_)
     {
         PstreamBuffers pBufs(Pstream::commsTypes::nonBlocking);
         forAll(rowsTo, proci)
@@ -460,7 +515,7 @@ void Foam::demPartition::inRounds
                 SubList<label>
                 (
                     rowsTo[proci],
-                    min(maxRowsPerMessage, rowsTo[proci].size() - start),
+                    min(rowsPerMessage_, rowsTo[proci].size() - start),
                     start
                 ),
                 os
@@ -498,9 +553,9 @@ void Foam::demPartition::setInputs
 
 void Foam::demPartition::distribute
 (
-    const demState& meshRows,
-    const List<vectorField>& vecIn,
-    const List<scalarField>& scaIn
+    demState& meshRows,
+    List<vectorField>& vecIn,
+    List<scalarField>& scaIn
 )
 {
     if (autoWeight_ && nPartitions_ > 0)
@@ -550,114 +605,56 @@ void Foam::demPartition::distribute
         partition(meshRows, load);
     }
 
-    // Where the DEM rows come from: per source processor a block, in
-    // processor order, each in its mesh order (a deterministic order; the
-    // engine's results do not depend on it anyway)
+    // The DEM rows take the mesh rows' storage over: the rows that stay on
+    // this processor (most of them when the regions and the mesh
+    // decomposition agree) keep their places, a row that leaves is
+    // streamed and its place takes a row that arrives; rows are added
+    // only where more arrive than leave. So the rows are held once, plus
+    // one round's streams (a copy of the rows beside the DEM's was most of
+    // the 2-process memory above 1 process). The order does not matter
+    // here: the rows are sorted by globalId below
     const label myProc = Pstream::myProcNo();
-    labelList nSend(nProcs, 0);
-    forAll(rowsTo, proci)
-    {
-        nSend[proci] = (proci == myProc) ? 0 : rowsTo[proci].size();
-    }
-    labelList nRecv(nProcs, 0);
-    UPstream::allToAll(nSend, nRecv);
-    nRecv[myProc] = rowsTo[myProc].size();
-    labelList offset(nProcs + 1, 0);
-    forAll(nRecv, proci)
-    {
-        offset[proci + 1] = offset[proci] + nRecv[proci];
-    }
-    const label nOwned = offset[nProcs];
+    nMesh_ = nMesh;
+    dem_.transfer(meshRows);
+    dem_.nOwned = -1;
+    fromProc_.setSize(nMesh);
+    fromProc_ = myProc;
+    fromRow_ = identity(nMesh);
+    vecCols_.transfer(vecIn);
+    scaCols_.transfer(scaIn);
 
-    dem_.clear();
-    dem_.resize(nOwned);
-    dem_.contactForcesValid = meshRows.contactForcesValid;
-    fromProc_.setSize(nOwned);
-    fromRow_.setSize(nOwned);
-    vecCols_.setSize(vecIn.size());
-    for (vectorField& col : vecCols_)
+    // A row's running contacts (its previous DEM owner wrote them to the
+    // mesh owner's copy) go to the engine where the row is
+    for (const label i : rowsTo[myProc])
     {
-        col.setSize(nOwned);
-    }
-    scaCols_.setSize(scaIn.size());
-    for (scalarField& col : scaCols_)
-    {
-        col.setSize(nOwned);
-    }
-
-    // DEM row `row` takes mesh row i of processor proci: its forces,
-    // running contacts (its previous DEM owner wrote them to the mesh
-    // owner's copy) and extra columns
-    const auto adopt = [&]
-    (
-        const label row,
-        const label proci,
-        const label i,
-        const vector& fExt,
-        const vector& fContact,
-        const vector& tContact,
-        const labelList& rowKeys,
-        const List<vector>& rowXi
-    )
-    {
-        dem_.fExt[row] = fExt;
-        dem_.fContact[row] = fContact;
-        dem_.tContact[row] = tContact;
-        fromProc_[row] = proci;
-        fromRow_[row] = i;
-        engine_.setHistory(dem_.globalId[row], rowKeys, rowXi);
-    };
-
-    // The rows that stay on this processor (most of them when the regions
-    // and the mesh decomposition agree) are copied, not streamed: a stream
-    // to oneself would hold them twice more, serialised and read back
-    forAll(rowsTo[myProc], k)
-    {
-        const label i = rowsTo[myProc][k];
-        const label row = offset[myProc] + k;
-        dem_.set
-        (
-            row, meshRows.x[i], meshRows.v[i], meshRows.omega[i],
-            meshRows.r[i], meshRows.m[i], meshRows.N[i], meshRows.typeId[i],
-            meshRows.globalId[i]
-        );
-        adopt
-        (
-            row, myProc, i, meshRows.fExt[i], meshRows.fContact[i],
-            meshRows.tContact[i], keys[i], xi[i]
-        );
-        forAll(vecCols_, col)
-        {
-            vecCols_[col][row] = vecIn[col][i];
-        }
-        forAll(scaCols_, col)
-        {
-            scaCols_[col][row] = scaIn[col][i];
-        }
+        engine_.setHistory(dem_.globalId[i], keys[i], xi[i]);
         keys[i].clear();
         xi[i].clear();
     }
 
     // The others in rounds (inRounds), streamed straight from the rows (an
     // indirect list is written as the list of its elements); a sent row's
-    // contacts are dropped at once: the stream is their copy
+    // contacts are dropped at once (the stream is their copy) and its
+    // place is free for the rows that arrive
+    DynamicList<label> freeRows;
+    label nextFree = 0;
     inRounds
     (
         rowsTo,
         [&](const labelUList& rows, UOPstream& os)
         {
             os  << rows;
-            meshRows.writeRows(os, rows);
-            os  << UIndirectList<vector>(meshRows.fExt, rows)
-                << UIndirectList<vector>(meshRows.fContact, rows)
-                << UIndirectList<vector>(meshRows.tContact, rows)
+            dem_.writeRows(os, rows);
+            os  << UIndirectList<vector>(dem_.fExt, rows)
+                << UIndirectList<vector>(dem_.fContact, rows)
+                << UIndirectList<vector>(dem_.tContact, rows)
                 << UIndirectList<labelList>(keys, rows)
                 << UIndirectList<List<vector>>(xi, rows);
-            for (const vectorField& col : vecIn)
+            for (const vectorField& col : vecCols_)
             {
                 os << UIndirectList<vector>(col, rows);
             }
-            for (const scalarField& col : scaIn)
+            for (const scalarField& col : scaCols_)
             {
                 os << UIndirectList<scalar>(col, rows);
             }
@@ -665,38 +662,85 @@ void Foam::demPartition::distribute
             {
                 keys[i].clear();
                 xi[i].clear();
+                freeRows.append(i);
             }
         },
-        [&](const label proci, const label start, UIPstream& is)
+        [&](const label proci, const label, UIPstream& is)
         {
-            const labelList rows(is);
-            const label row0 = offset[proci] + start;
-            dem_.readRows(is, row0);
+            // The places: free ones first, then new rows at the end (a
+            // row not yet sent is never overwritten)
+            const labelList from(is);
+            labelList rows(from.size());
+            const label nNew =
+                max(from.size() - (freeRows.size() - nextFree), 0);
+            const label row0 = dem_.size();
+            if (nNew)
+            {
+                resizeRows(row0 + nNew);
+            }
+            forAll(rows, k)
+            {
+                rows[k] =
+                    (nextFree < freeRows.size())
+                  ? freeRows[nextFree++]
+                  : row0 + k - (rows.size() - nNew);
+            }
+
+            dem_.readRows(is, rows);
             const List<vector> fExt(is);
             const List<vector> fContact(is);
             const List<vector> tContact(is);
             const List<labelList> rowKeys(is);
             const List<List<vector>> rowXi(is);
-            forAll(vecCols_, col)
+            for (vectorField& col : vecCols_)
             {
                 const vectorField vals(is);
-                SubList<vector>(vecCols_[col], vals.size(), row0) = vals;
+                UIndirectList<vector>(col, rows) = vals;
             }
-            forAll(scaCols_, col)
+            for (scalarField& col : scaCols_)
             {
                 const scalarField vals(is);
-                SubList<scalar>(scaCols_[col], vals.size(), row0) = vals;
+                UIndirectList<scalar>(col, rows) = vals;
             }
             forAll(rows, k)
             {
-                adopt
-                (
-                    row0 + k, proci, rows[k], fExt[k], fContact[k],
-                    tContact[k], rowKeys[k], rowXi[k]
-                );
+                const label row = rows[k];
+                dem_.fExt[row] = fExt[k];
+                dem_.fContact[row] = fContact[k];
+                dem_.tContact[row] = tContact[k];
+                fromProc_[row] = proci;
+                fromRow_[row] = from[k];
+                engine_.setHistory(dem_.globalId[row], rowKeys[k], rowXi[k]);
             }
         }
     );
+
+    // More rows left than arrived: the last rows fill the free places
+    {
+        labelList holes
+        (
+            SubList<label>(freeRows, freeRows.size() - nextFree, nextFree)
+        );
+        sort(holes);
+        label end = dem_.size();
+        label lo = 0;
+        label hi = holes.size() - 1;
+        while (lo <= hi)
+        {
+            if (holes[hi] == end - 1)
+            {
+                // The last row is free itself
+                --hi;
+            }
+            else
+            {
+                copyRow(end - 1, holes[lo++]);
+            }
+            --end;
+        }
+        resizeRows(end);
+    }
+    const label nOwned = dem_.size();
 
     // The histories are the engine's now (adopt); collect hands them back
     keys.clear();
@@ -750,9 +794,7 @@ void Foam::demPartition::distribute
 void Foam::demPartition::collect
 (
     demState& meshRows,
-    labelList& agglomerateIds,
-    List<labelList>& keys,
-    List<List<vector>>& xi,
+    const giveBackFunction& giveBack,
     const List<vectorField>& vecOut,
     const List<scalarField>& scaOut,
     List<vectorField>& vecBack,
@@ -769,45 +811,16 @@ void Foam::demPartition::collect
     }
 
     const label myProc = Pstream::myProcNo();
-    const label nMesh = meshRows.owned();
-    agglomerateIds.setSize(nMesh);
-    keys.setSize(nMesh);
-    xi.setSize(nMesh);
     vecBack.setSize(vecOut.size());
     for (vectorField& col : vecBack)
     {
-        col.setSize(nMesh);
+        col.setSize(nMesh_);
     }
     scaBack.setSize(scaOut.size());
     for (scalarField& col : scaBack)
     {
-        col.setSize(nMesh);
+        col.setSize(nMesh_);
     }
-
-    // What a mesh row takes back from its DEM row, whether it stayed on
-    // this processor or came back in a stream (its extra columns apart)
-    const auto giveBack = [&]
-    (
-        const label i,
-        const point& x,
-        const vector& v,
-        const vector& omega,
-        const vector& fContact,
-        const vector& tContact,
-        const label aggId,
-        labelList& rowKeys,
-        List<vector>& rowXi
-    )
-    {
-        meshRows.x[i] = x;
-        meshRows.v[i] = v;
-        meshRows.omega[i] = omega;
-        meshRows.fContact[i] = fContact;
-        meshRows.tContact[i] = tContact;
-        agglomerateIds[i] = aggId;
-        keys[i].transfer(rowKeys);
-        xi[i].transfer(rowXi);
-    };
 
     // The contacts leave the engine's store as they are handed back, so
     // the store shrinks as the mesh side's lists grow
@@ -888,18 +901,12 @@ void Foam::demPartition::collect
             forAll(vecBack, col)
             {
                 const vectorField vals(is);
-                forAll(rows, j)
-                {
-                    vecBack[col][rows[j]] = vals[j];
-                }
+                UIndirectList<vector>(vecBack[col], rows) = vals;
             }
             forAll(scaBack, col)
             {
                 const scalarField vals(is);
-                forAll(rows, j)
-                {
-                    scaBack[col][rows[j]] = vals[j];
-                }
+                UIndirectList<scalar>(scaBack[col], rows) = vals;
             }
             forAll(rows, j)
             {
@@ -913,16 +920,23 @@ void Foam::demPartition::collect
         }
     );
 
-    if (nBack != nMesh)
+    if (nBack != nMesh_)
     {
         FatalErrorInFunction
-            << nMesh << " parcels on this processor went to the DEM, "
+            << nMesh_ << " parcels on this processor went to the DEM, "
             << nBack << " came back" << exit(FatalError);
     }
 
     // The histories are the mesh side's until the next distribute gives
-    // them to the engine again
+    // them to the engine again; the rows are the parcels' again, and their
+    // storage goes back to the mesh side, empty, for the next fluid step's
+    // mesh rows (the same blocks every step: re-made blocks of different
+    // sizes would leave free holes in the heap that stay resident)
     engine_.releaseHistory();
+    nDemOwned_ = nOwned;
+    nDemRows_ = dem_.size();
+    meshRows.transfer(dem_);
+    meshRows.clear();
 }
 
 
@@ -935,7 +949,9 @@ void Foam::demPartition::evolve
     demSubStepForces* ext
 )
 {
-    distribute(s);
+    List<vectorField> noVectors;
+    List<scalarField> noScalars;
+    distribute(s, noVectors, noScalars);
 
     engine_.evolve(dem_, Dt, g, obs, ext);
 }

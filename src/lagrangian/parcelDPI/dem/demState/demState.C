@@ -25,12 +25,84 @@ namespace Foam
         }
     };
 
+    struct demStateClearStorage
+    {
+        template<class T>
+        void operator()(DynamicList<T>& c) const
+        {
+            c.clearStorage();
+        }
+    };
+
+    struct demStateTransfer
+    {
+        template<class T>
+        void operator()(DynamicList<T>& c, DynamicList<T>& from) const
+        {
+            c.transfer(from);
+        }
+    };
+
+    struct demStateCopyRow
+    {
+        label from;
+        label to;
+
+        template<class T>
+        void operator()(DynamicList<T>& c) const
+        {
+            c[to] = c[from];
+        }
+    };
+
+    //- A one-column operation applied to the first of two columns
+    template<class Op>
+    struct demStateFirstOnly
+    {
+        const Op& op;
+
+        template<class T>
+        void operator()(DynamicList<T>& c, DynamicList<T>&) const
+        {
+            op(c);
+        }
+    };
+
+    //- The parcels of demState::writeRows, read (in the order written)
+    struct demStateRowsIn
+    {
+        const List<point> x;
+        const List<vector> v;
+        const List<vector> omega;
+        const List<scalar> r;
+        const List<scalar> m;
+        const List<scalar> N;
+        const labelList typeId;
+        const labelList globalId;
+
+        explicit demStateRowsIn(Istream& is)
+        :
+            x(is), v(is), omega(is), r(is), m(is), N(is), typeId(is),
+            globalId(is)
+        {}
+
+        //- Row `row` of s becomes parcel k
+        void setRow(demState& s, const label k, const label row) const
+        {
+            s.set
+            (
+                row, x[k], v[k], omega[k], r[k], m[k], N[k], typeId[k],
+                globalId[k]
+            );
+        }
+    };
+
     struct demStateGrow
     {
         template<class T>
         void operator()(DynamicList<T>& c) const
         {
-            c.append(T());
+            c.append(pTraits<T>::zero);
         }
     };
 
@@ -76,11 +148,41 @@ namespace Foam
 }
 
 
+template<class Op>
+void Foam::demState::forEachColumn(const Op& op)
+{
+    forEachColumnWith(*this, demStateFirstOnly<Op>{op});
+}
+
+
 void Foam::demState::clear()
 {
     forEachColumn(demStateClear());
     contactForcesValid = false;
     nOwned = -1;
+}
+
+
+void Foam::demState::clearStorage()
+{
+    forEachColumn(demStateClearStorage());
+    contactForcesValid = false;
+    nOwned = -1;
+}
+
+
+void Foam::demState::transfer(demState& s)
+{
+    forEachColumnWith(s, demStateTransfer());
+    contactForcesValid = s.contactForcesValid;
+    nOwned = s.nOwned;
+    s.clearStorage();
+}
+
+
+void Foam::demState::copyRow(const label from, const label to)
+{
+    forEachColumn(demStateCopyRow{from, to});
 }
 
 
@@ -168,29 +270,34 @@ void Foam::demState::writeRows(Ostream& os, const labelUList& rows) const
 
 Foam::label Foam::demState::readRows(Istream& is, const label start)
 {
-    const List<point> xs(is);
-    const List<vector> vs(is);
-    const List<vector> omegas(is);
-    const List<scalar> rs(is);
-    const List<scalar> ms(is);
-    const List<scalar> Ns(is);
-    const labelList typeIds(is);
-    const labelList globalIds(is);
-
+    const demStateRowsIn in(is);
+    const label n = in.x.size();
     const label row0 = (start < 0) ? size() : start;
-    if (row0 + xs.size() > size())
+    if (row0 + n > size())
     {
-        resize(row0 + xs.size());
+        resize(row0 + n);
     }
-    forAll(xs, k)
+    for (label k = 0; k < n; ++k)
     {
-        set
-        (
-            row0 + k, xs[k], vs[k], omegas[k], rs[k], ms[k], Ns[k],
-            typeIds[k], globalIds[k]
-        );
+        in.setRow(*this, k, row0 + k);
     }
-    return xs.size();
+    return n;
+}
+
+
+void Foam::demState::readRows(Istream& is, const labelUList& rows)
+{
+    const demStateRowsIn in(is);
+    if (in.x.size() != rows.size())
+    {
+        FatalErrorInFunction
+            << in.x.size() << " parcels read for " << rows.size() << " rows"
+            << abort(FatalError);
+    }
+    forAll(rows, k)
+    {
+        in.setRow(*this, k, rows[k]);
+    }
 }
 
 

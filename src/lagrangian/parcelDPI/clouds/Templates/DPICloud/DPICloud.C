@@ -698,8 +698,9 @@ void Foam::DPICloud<CloudType>::copyToState(const bool contactForcesValid)
 
     // With the DEM's own partition the histories travel with the rows
     // every fluid step: the parcels' lists are moved, not copied, to the
-    // partition (which gives them to the engine), and come back in
-    // copyFromState, so a history is held once while the DEM runs
+    // partition (which gives them to the engine), and come back with
+    // the rows (demPartition::collect), so a history is held once while
+    // the DEM runs
     if (partition_.valid())
     {
         rowKeys_.setSize(state_.size());
@@ -728,6 +729,27 @@ void Foam::DPICloud<CloudType>::copyToState(const bool contactForcesValid)
 
 
 template<class CloudType>
+void Foam::DPICloud<CloudType>::setParcel
+(
+    parcelType& p,
+    const point& x,
+    const vector& v,
+    const vector& omega,
+    const vector& fContact,
+    const vector& tContact,
+    const label agglomerateId
+)
+{
+    p.xDEM() = x;
+    p.U() = v;
+    p.omega() = omega;
+    p.f() = fContact;
+    p.torque() = tContact;
+    p.agglomerateId() = agglomerateId;
+}
+
+
+template<class CloudType>
 void Foam::DPICloud<CloudType>::copyFromState()
 {
     DynamicList<label> keys;
@@ -736,27 +758,16 @@ void Foam::DPICloud<CloudType>::copyFromState()
     label i = 0;
     for (parcelType& p : *this)
     {
-        p.xDEM() = state_.x[i];
-        p.U() = state_.v[i];
-        p.omega() = state_.omega[i];
-        p.agglomerateId() = agglomerateIds_[i];
-        p.f() = state_.fContact[i];
-        p.torque() = state_.tContact[i];
-
-        if (partition_.valid())
-        {
-            // Brought back from the DEM owner (demPartition::collect)
-            p.contactKeys().transfer(rowKeys_[i]);
-            p.contactXi().transfer(rowXi_[i]);
-        }
-        else
-        {
-            keys.clear();
-            xi.clear();
-            engine_->history(p.globalId(), keys, xi);
-            p.contactKeys() = keys;
-            p.contactXi() = xi;
-        }
+        setParcel
+        (
+            p, state_.x[i], state_.v[i], state_.omega[i],
+            state_.fContact[i], state_.tContact[i], agglomerateIds_[i]
+        );
+        keys.clear();
+        xi.clear();
+        engine_->history(p.globalId(), keys, xi);
+        p.contactKeys() = keys;
+        p.contactXi() = xi;
         ++i;
     }
 }
@@ -912,13 +923,11 @@ void Foam::DPICloud<CloudType>::writeDiagnostics()
         );
     }
 
-    const demState& demRows =
-        partition_.valid() ? partition_->state() : state_;
     balance_->sample
     (
         this->db().time().value(),
-        demRows.owned(),
-        demRows.size(),
+        partition_.valid() ? partition_->nDemOwned() : state_.owned(),
+        partition_.valid() ? partition_->nDemRows() : state_.size(),
         d.nPairContacts
     );
 
@@ -1188,7 +1197,9 @@ void Foam::DPICloud<CloudType>::fluidStep
     demStepper& stepper,
     const scalar Dt,
     const vector& g,
-    demObserver* obs
+    demObserver* obs,
+    List<vectorField>& vecOut,
+    List<scalarField>& scaOut
 )
 {
     if (!coupling_->active())
@@ -1203,19 +1214,40 @@ void Foam::DPICloud<CloudType>::fluidStep
     {
         coupling_->setHeldForces(state_, Dt);
         stepper.evolve(state_, Dt, g, obs);
-        coupling_->finishHeld(*this, state_, Dt);
         return;
     }
 
-    List<vectorField> vecIn, vecOut;
-    List<scalarField> scaIn, scaOut;
+    List<vectorField> vecIn;
+    List<scalarField> scaIn;
     coupling_->packStates(vecIn, scaIn);
     subSteps
     (
         stepper, state_, coupling_->nRows(), vecIn, scaIn, vecOut, scaOut,
         Dt, g, obs
     );
-    coupling_->finishSubSteps(*this, state_, vecOut, scaOut);
+}
+
+
+template<class CloudType>
+void Foam::DPICloud<CloudType>::finishFluidStep
+(
+    const List<vectorField>& vecOut,
+    const List<scalarField>& scaOut,
+    const scalar Dt
+)
+{
+    if (!coupling_->active())
+    {
+        return;
+    }
+    if (coupling_->subStepForces())
+    {
+        coupling_->finishSubSteps(*this, vecOut, scaOut);
+    }
+    else
+    {
+        coupling_->finishHeld(*this, Dt);
+    }
 }
 
 
@@ -1288,14 +1320,14 @@ void Foam::DPICloud<CloudType>::motion
     // updated every sub-step)
     engine_->resetStepDiagnostics();
 
+    List<vectorField> vecOut;
+    List<scalarField> scaOut;
     if (partition_.valid())
     {
         // The DEM on its own partition: the rows (with their fluid forces,
         // or with the frozen fluid states when the forces follow every
         // sub-step) go to their DEM owners and back
         partition_->setInputs(rowKeys_, rowXi_, haloReach(Dt), checkWhen);
-        List<vectorField> vecOut, vecBack;
-        List<scalarField> scaOut, scaBack;
         if (coupling_->subStepForces())
         {
             coupling_->sample(*this, state_);
@@ -1313,11 +1345,11 @@ void Foam::DPICloud<CloudType>::motion
         else
         {
             // held forces set here, the DEM sub-steps at the DEM owners
-            fluidStep(*partition_, Dt, g, obs);
+            fluidStep(*partition_, Dt, g, obs, vecOut, scaOut);
         }
 
-        // Labelled where the DEM rows are, then everything back to the
-        // mesh owners
+        // Labelled where the DEM rows are, then every row straight back
+        // to its parcel (mesh row i is the i-th parcel of the list)
         agglomerates_->update
         (
             partition_->state(),
@@ -1325,15 +1357,40 @@ void Foam::DPICloud<CloudType>::motion
             partition_->agglomerateIds(),
             &partition_->halo()
         );
+        List<parcelType*> parcels(this->size());
+        {
+            label i = 0;
+            for (parcelType& p : *this)
+            {
+                parcels[i++] = &p;
+            }
+        }
+        List<vectorField> vecBack;
+        List<scalarField> scaBack;
         partition_->collect
         (
-            state_, agglomerateIds_, rowKeys_, rowXi_,
+            state_,
+            [&parcels]
+            (
+                const label i,
+                const point& x,
+                const vector& v,
+                const vector& omega,
+                const vector& fContact,
+                const vector& tContact,
+                const label aggId,
+                labelList& keys,
+                List<vector>& xi
+            )
+            {
+                parcelType& p = *parcels[i];
+                setParcel(p, x, v, omega, fContact, tContact, aggId);
+                p.contactKeys().transfer(keys);
+                p.contactXi().transfer(xi);
+            },
             vecOut, scaOut, vecBack, scaBack
         );
-        if (coupling_->subStepForces())
-        {
-            coupling_->finishSubSteps(*this, state_, vecBack, scaBack);
-        }
+        finishFluidStep(vecBack, scaBack, Dt);
     }
     else
     {
@@ -1352,7 +1409,8 @@ void Foam::DPICloud<CloudType>::motion
 
         // DEM sub-steps with the fluid forces in state_.fExt, their
         // reaction into UTrans/UCoeff
-        fluidStep(engine_(), Dt, g, obs);
+        fluidStep(engine_(), Dt, g, obs, vecOut, scaOut);
+        finishFluidStep(vecOut, scaOut, Dt);
 
         agglomerates_->update
         (
@@ -1361,10 +1419,9 @@ void Foam::DPICloud<CloudType>::motion
             agglomerateIds_,
             halo_.get()
         );
+        copyFromState();
     }
     agglomerates_->write(t1);
-
-    copyFromState();
 
     writeDiagnostics();
 

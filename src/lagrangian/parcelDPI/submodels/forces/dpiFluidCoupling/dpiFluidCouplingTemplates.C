@@ -353,7 +353,6 @@ template<class CloudType>
 void Foam::dpiFluidCoupling::finishSubSteps
 (
     CloudType& cloud,
-    demState& s,
     const List<vectorField>& vecOut,
     const List<scalarField>& scaOut
 )
@@ -366,7 +365,7 @@ void Foam::dpiFluidCoupling::finishSubSteps
     // The fluid step's impulse of each parcel, spread once
     addSources(cloud, vecOut[0], scaOut[0]);
 
-    endFluidStep(cloud, s);
+    endFluidStep(cloud);
 }
 
 
@@ -374,7 +373,6 @@ template<class CloudType>
 void Foam::dpiFluidCoupling::finishHeld
 (
     CloudType& cloud,
-    demState& s,
     const scalar Dt
 )
 {
@@ -386,20 +384,14 @@ void Foam::dpiFluidCoupling::finishHeld
         spImp[i] = Dt*spCoupled_[i];
     }
     addSources(cloud, impulse, spImp);
-    endFluidStep(cloud, s);
+    endFluidStep(cloud);
 }
 
 
 template<class CloudType>
-void Foam::dpiFluidCoupling::endFluidStep(CloudType& cloud, demState& s)
+void Foam::dpiFluidCoupling::endFluidStep(CloudType& cloud)
 {
     sendRemoteSources(cloud);
-
-    // Forces are not held into the next fluid step
-    for (label i = 0; i < nRows_; ++i)
-    {
-        s.fExt[i] = Zero;
-    }
 
     if (dispersion_.valid())
     {
