@@ -837,17 +837,18 @@ void Foam::demPartition::collect
 
     // Rows whose mesh owner is this processor go straight back
     label nBack = rowsTo[myProc].size();
+    rowBack row;
     for (const label k : rowsTo[myProc])
     {
         const label i = fromRow_[k];
-        labelList rowKeys;
-        List<vector> rowXi;
-        take(k, rowKeys, rowXi);
-        giveBack
-        (
-            i, dem_.x[k], dem_.v[k], dem_.omega[k], dem_.fContact[k],
-            dem_.tContact[k], agglomerateIds_[k], rowKeys, rowXi
-        );
+        row.x = dem_.x[k];
+        row.v = dem_.v[k];
+        row.omega = dem_.omega[k];
+        row.fContact = dem_.fContact[k];
+        row.tContact = dem_.tContact[k];
+        row.agglomerateId = agglomerateIds_[k];
+        take(k, row.keys, row.xi);
+        giveBack(i, row);
         forAll(vecBack, col)
         {
             vecBack[col][i] = vecOut[col][k];
@@ -910,11 +911,15 @@ void Foam::demPartition::collect
             }
             forAll(rows, j)
             {
-                giveBack
-                (
-                    rows[j], x[j], v[j], omega[j], fContact[j], tContact[j],
-                    aggIds[j], allKeys[j], allXi[j]
-                );
+                row.x = x[j];
+                row.v = v[j];
+                row.omega = omega[j];
+                row.fContact = fContact[j];
+                row.tContact = tContact[j];
+                row.agglomerateId = aggIds[j];
+                row.keys.transfer(allKeys[j]);
+                row.xi.transfer(allXi[j]);
+                giveBack(rows[j], row);
             }
             nBack += rows.size();
         }

@@ -729,27 +729,6 @@ void Foam::DPICloud<CloudType>::copyToState(const bool contactForcesValid)
 
 
 template<class CloudType>
-void Foam::DPICloud<CloudType>::setParcel
-(
-    parcelType& p,
-    const point& x,
-    const vector& v,
-    const vector& omega,
-    const vector& fContact,
-    const vector& tContact,
-    const label agglomerateId
-)
-{
-    p.xDEM() = x;
-    p.U() = v;
-    p.omega() = omega;
-    p.f() = fContact;
-    p.torque() = tContact;
-    p.agglomerateId() = agglomerateId;
-}
-
-
-template<class CloudType>
 void Foam::DPICloud<CloudType>::copyFromState()
 {
     DynamicList<label> keys;
@@ -1370,23 +1349,16 @@ void Foam::DPICloud<CloudType>::motion
         partition_->collect
         (
             state_,
-            [&parcels]
-            (
-                const label i,
-                const point& x,
-                const vector& v,
-                const vector& omega,
-                const vector& fContact,
-                const vector& tContact,
-                const label aggId,
-                labelList& keys,
-                List<vector>& xi
-            )
+            [&parcels](const label i, demPartition::rowBack& row)
             {
                 parcelType& p = *parcels[i];
-                setParcel(p, x, v, omega, fContact, tContact, aggId);
-                p.contactKeys().transfer(keys);
-                p.contactXi().transfer(xi);
+                setParcel
+                (
+                    p, row.x, row.v, row.omega, row.fContact, row.tContact,
+                    row.agglomerateId
+                );
+                p.contactKeys().transfer(row.keys);
+                p.contactXi().transfer(row.xi);
             },
             vecOut, scaOut, vecBack, scaBack
         );
