@@ -616,7 +616,6 @@ void Foam::demPartition::distribute
     const label myProc = Pstream::myProcNo();
     nMesh_ = nMesh;
     dem_.transfer(meshRows);
-    dem_.nOwned = -1;
     fromProc_.setSize(nMesh);
     fromProc_ = myProc;
     fromRow_ = identity(nMesh);
@@ -742,7 +741,8 @@ void Foam::demPartition::distribute
     }
     const label nOwned = dem_.size();
 
-    // The histories are the engine's now (adopt); collect hands them back
+    // The histories are the engine's now (setHistory); collect hands them
+    // back
     keys.clear();
     xi.clear();
 
@@ -750,10 +750,10 @@ void Foam::demPartition::distribute
     // the globalId order of their first row (for sums in a fixed order),
     // so rows in that order are read one after the other, and a bed
     // numbered along a space-filling curve (`order morton` at injection)
-    // has every row's partners near it in memory. The blocks above are in
-    // the source processors' order, each in its mesh order, which parcels
-    // crossing processors leave unsorted. (Results do not depend on the
-    // row order.)
+    // has every row's partners near it in memory. The rows above are in
+    // their mesh order, with the arrivals in the places of the rows sent
+    // away, which parcels crossing processors leave unsorted. (Results do
+    // not depend on the row order.)
     {
         // Often already in order (a settled bed whose rows stayed with
         // their processors): one pass decides, the sort only if not

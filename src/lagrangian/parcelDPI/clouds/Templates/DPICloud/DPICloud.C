@@ -1255,7 +1255,7 @@ void Foam::DPICloud<CloudType>::subSteps
         )
     );
     stepper.evolve(s, Dt, g, obs, forces.get());
-    coupling_->subStepResults(forces(), s, n, vecOut, scaOut);
+    coupling_->subStepResults(forces(), vecOut, scaOut);
 }
 
 

@@ -231,8 +231,6 @@ Foam::autoPtr<Foam::dpiSubStepForces> Foam::dpiFluidCoupling::newSubStepForces
 void Foam::dpiFluidCoupling::subStepResults
 (
     const dpiSubStepForces& f,
-    demState& s,
-    const label n,
     List<vectorField>& vecOut,
     List<scalarField>& scaOut
 ) const
@@ -243,11 +241,6 @@ void Foam::dpiFluidCoupling::subStepResults
     vecOut[1] = f.uStar();
     scaOut.setSize(1);
     scaOut[0] = f.spImpulse();
-
-    for (label i = 0; i < n; ++i)
-    {
-        s.fExt[i] = Zero;
-    }
 }
 
 
