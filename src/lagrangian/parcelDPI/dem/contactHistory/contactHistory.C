@@ -9,8 +9,161 @@ License
 #include "contactHistory.H"
 #include "error.H"
 #include "Map.H"
+#include <algorithm>
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+std::pair<std::size_t, std::size_t> Foam::contactHistory::range
+(
+    const label globalId
+) const
+{
+    const std::uint64_t lo = key(globalId, 0);
+    const std::uint64_t hi = lo | 0xFFFFFFFFu;
+    const auto first = store_.begin();
+    const auto last = first + nSorted_;
+    const auto b = std::lower_bound
+    (
+        first, last, lo,
+        [](const entry& e, const std::uint64_t k) { return e.key < k; }
+    );
+    const auto e = std::upper_bound
+    (
+        b, last, hi,
+        [](const std::uint64_t k, const entry& e) { return k < e.key; }
+    );
+    return {std::size_t(b - first), std::size_t(e - first)};
+}
+
+
+void Foam::contactHistory::sortUnique
+(
+    const std::size_t from,
+    const bool unique
+) const
+{
+    const auto byKey = [](const entry& a, const entry& b)
+    {
+        return a.key < b.key;
+    };
+    if (unique)
+    {
+        // In place (a stable sort takes a buffer of up to the entries'
+        // size)
+        std::sort(store_.begin() + from, store_.end(), byKey);
+    }
+    else
+    {
+        // Stable, so that of equal keys the last given stays (as a map's
+        // assignment kept it)
+        std::stable_sort(store_.begin() + from, store_.end(), byKey);
+    }
+
+    std::size_t out = from;
+    for (std::size_t i = from; i < store_.size(); ++i)
+    {
+        if (i + 1 < store_.size() && store_[i + 1].key == store_[i].key)
+        {
+            continue;
+        }
+        if (store_[i].xi != vector::zero)
+        {
+            store_[out++] = store_[i];
+        }
+    }
+    store_.resize(out);
+}
+
+
+void Foam::contactHistory::sortIn() const
+{
+    if (callOwner_.empty())
+    {
+        return;
+    }
+
+    // An owner given twice: only its last call counts. (The callers give
+    // each owner once between two reads; this keeps the meaning of
+    // "replace" if one does not.)
+    std::vector<std::pair<label, label>> last(callOwner_.size());
+    for (std::size_t c = 0; c < callOwner_.size(); ++c)
+    {
+        last[c] = {callOwner_[c], label(c)};
+    }
+    std::sort(last.begin(), last.end());
+    bool repeated = false;
+    for (std::size_t c = 1; c < last.size(); ++c)
+    {
+        repeated = repeated || last[c].first == last[c - 1].first;
+    }
+    if (repeated)
+    {
+        std::size_t out = nSorted_;
+        for (std::size_t i = nSorted_; i < store_.size(); ++i)
+        {
+            const label owner = label(std::int32_t(store_[i].key >> 32));
+            // The owner's last call: the end of its run in last
+            const auto it = std::upper_bound
+            (
+                last.begin(), last.end(),
+                std::pair<label, label>(owner, labelMax)
+            );
+            if ((it - 1)->second == callOf_[i - nSorted_])
+            {
+                store_[out++] = store_[i];
+            }
+        }
+        store_.resize(out);
+    }
+
+    // The new entries sorted, then merged with the sorted ones, whose
+    // owners given again are zero already (erase), and the zeros dropped
+    const std::size_t nOld = nSorted_;
+    sortUnique(nOld, false);
+    std::inplace_merge
+    (
+        store_.begin(),
+        store_.begin() + nOld,
+        store_.end(),
+        [](const entry& a, const entry& b) { return a.key < b.key; }
+    );
+    store_.erase
+    (
+        std::remove_if
+        (
+            store_.begin(),
+            store_.end(),
+            [](const entry& e) { return e.xi == vector::zero; }
+        ),
+        store_.end()
+    );
+    nSorted_ = store_.size();
+
+    std::vector<label>().swap(callOf_);
+    std::vector<label>().swap(callOwner_);
+}
+
+
+Foam::label Foam::contactHistory::size() const
+{
+    sortIn();
+    label n = 0;
+    for (const entry& e : store_)
+    {
+        n += (e.xi != vector::zero);
+    }
+    return n;
+}
+
+
+void Foam::contactHistory::clear()
+{
+    std::vector<entry>().swap(store_);
+    nSorted_ = 0;
+    std::vector<label>().swap(callOf_);
+    std::vector<label>().swap(callOwner_);
+}
+
 
 Foam::vector Foam::contactHistory::find
 (
@@ -18,34 +171,28 @@ Foam::vector Foam::contactHistory::find
     const label partner
 ) const
 {
-    const auto iter = store_.find(key(owner, partner));
-    return iter == store_.end() ? vector::zero : iter->second;
-}
-
-
-void Foam::contactHistory::set
-(
-    const label owner,
-    const label partner,
-    const vector& xi
-)
-{
-    if (xi == vector::zero)
-    {
-        store_.erase(key(owner, partner));
-    }
-    else
-    {
-        store_[key(owner, partner)] = xi;
-    }
+    sortIn();
+    const std::uint64_t k = key(owner, partner);
+    const auto last = store_.begin() + nSorted_;
+    const auto it = std::lower_bound
+    (
+        store_.begin(), last, k,
+        [](const entry& e, const std::uint64_t k) { return e.key < k; }
+    );
+    return (it != last && it->key == k) ? it->xi : vector::zero;
 }
 
 
 void Foam::contactHistory::erase(const label globalId)
 {
-    const std::uint64_t lo = key(globalId, 0);
-    const std::uint64_t hi = lo | 0xFFFFFFFFu;
-    store_.erase(store_.lower_bound(lo), store_.upper_bound(hi));
+    // Zeroed in place, not moved out: collect takes every row's contacts
+    // one row after the other, and closing each gap would cost the whole
+    // store every time. Reads skip zeros; the next sort drops them
+    const auto r = range(globalId);
+    for (std::size_t i = r.first; i < r.second; ++i)
+    {
+        store_[i].xi = vector::zero;
+    }
 }
 
 
@@ -56,18 +203,18 @@ void Foam::contactHistory::history
     DynamicList<vector>& xi
 ) const
 {
-    const std::uint64_t lo = key(globalId, 0);
-    const std::uint64_t hi = lo | 0xFFFFFFFFu;
-
-    for
-    (
-        auto iter = store_.lower_bound(lo);
-        iter != store_.end() && iter->first <= hi;
-        ++iter
-    )
+    sortIn();
+    const auto r = range(globalId);
+    for (std::size_t i = r.first; i < r.second; ++i)
     {
-        partnerKeys.append(label(std::int32_t(iter->first & 0xFFFFFFFFu)));
-        xi.append(iter->second);
+        if (store_[i].xi != vector::zero)
+        {
+            partnerKeys.append
+            (
+                label(std::int32_t(store_[i].key & 0xFFFFFFFFu))
+            );
+            xi.append(store_[i].xi);
+        }
     }
 }
 
@@ -99,11 +246,19 @@ void Foam::contactHistory::setHistory
             << exit(FatalError);
     }
 
+    // The owner's sorted contacts go now; the new ones wait at the end
+    // until the next read sorts them in (the hand-over gives every row's
+    // contacts in turn: one sort for all)
     erase(globalId);
 
+    // A zero xi is kept until the sort: it undoes an equal key before it
+    // in the call (the sort keeps the last of equal keys, then drops zeros)
+    const label call = label(callOwner_.size());
+    callOwner_.push_back(globalId);
     forAll(xi, i)
     {
-        set(globalId, partnerKeys[i], xi[i]);
+        store_.push_back({key(globalId, partnerKeys[i]), xi[i]});
+        callOf_.push_back(call);
     }
 }
 
@@ -238,7 +393,19 @@ void Foam::contactHistory::flush
             << abort(FatalError);
     }
 
-    store_.clear();
+    // Rebuilt from the copy, at its size (a contact not in it has
+    // separated): pairs whose xi is not zero, and the walls' contacts
+    label n = 0;
+    forAll(nearXi_, k)
+    {
+        n += (nearHasXi_[k] && nearXi_[k] != vector::zero);
+    }
+    for (const DynamicList<wallContact>& ws : wallState_)
+    {
+        n += ws.size();
+    }
+    clear();
+    store_.reserve(n);
 
     forAll(pairRow, a)
     {
@@ -247,7 +414,10 @@ void Foam::contactHistory::flush
         {
             if (nearHasXi_[k] && nearXi_[k] != vector::zero)
             {
-                set(idi, workingIds_[nearJ[k]], nearXi_[k]);
+                store_.push_back
+                (
+                    {key(idi, workingIds_[nearJ[k]]), nearXi_[k]}
+                );
             }
         }
     }
@@ -256,9 +426,16 @@ void Foam::contactHistory::flush
     {
         for (const wallContact& w : wallState_[p])
         {
-            set(workingIds_[p], wallPartnerKey(w.wall, w.key), w.xi);
+            store_.push_back
+            (
+                {key(workingIds_[p], wallPartnerKey(w.wall, w.key)), w.xi}
+            );
         }
     }
+
+    // Its keys are unique: a near pair once, a row's wall contact once
+    sortUnique(0, true);
+    nSorted_ = store_.size();
 }
 
 
