@@ -16,6 +16,8 @@ have code "cohesive" (dpiFoam only). Columns:
                 OpenFOAM N x (steps - 1) / (ExecutionTime last - first)
   ratio_lig, ratio_of   dpi_psps / lig_psps, dpi_psps / of_psps
   *_speedup     rate on this np / rate on 1 process (same N)
+  *_pair_speedups  each repeat's run on this np over the same repeat's on 1
+                (run alternates them: the two are minutes apart at most)
   dpi_engine_psps   dpiFoam's 'DEM performance' (DEM engine, wall clock)
   dpi_pair_share    pair term / DEM engine time (dpiFoam's breakdown)
   lig_pair_share    LIGGGHTS' Pair time / loop time
@@ -67,7 +69,8 @@ import settlingScene as ss  # noqa: E402
 COLUMNS = [
     "code", "N", "np", "steps", "of_steps", "dpi_psps", "lig_psps",
     "of_psps", "ratio_lig", "ratio_of", "dpi_speedup", "lig_speedup",
-    "of_speedup", "dpi_engine_psps", "dpi_pair_share", "lig_pair_share",
+    "of_speedup", "dpi_pair_speedups", "lig_pair_speedups",
+    "of_pair_speedups", "dpi_engine_psps", "dpi_pair_share", "lig_pair_share",
     "z_start", "dpi_z_first", "dpi_z_end", "lig_z_start", "lig_z_end",
     "of_z_end", "dpi_KE", "lig_KE", "of_KE", "of_parcels_end",
     "dpi_rss_MB", "lig_rss_MB", "of_rss_MB", "dpi_empty_rss_MB",
@@ -236,6 +239,16 @@ def rows(base):
         for k in ("dpi", "lig", "of"):
             r[k + "_speedup"] = r[k + "_psps"]/one[k + "_psps"] if one \
                 else NAN
+            # Each repeat's own pair: run r on np processes over run r on
+            # 1, which `run` makes one after the other (the best-of ratio
+            # above can take its two runs from different states of the
+            # machine)
+            pairs = []
+            if one and r["np"] != 1:
+                many = [float(x) for x in r[k + "_runs"].split()]
+                single = [float(x) for x in one[k + "_runs"].split()]
+                pairs = [a/b for a, b in zip(many, single)]
+            r[k + "_pair_speedups"] = " ".join("%.3g" % x for x in pairs)
     return out
 
 
@@ -276,7 +289,16 @@ def markdown(table, md):
                         g(100*f(r, "dpi_pair_share"), "%.0f %%")))
         fh.write("\n(particle-steps per CPU second of the solver loop, per "
                  "process: on 2 processes the rate of the whole run; best "
-                 "of the runs in results.csv)\n\n")
+                 "of the runs in results.csv)\n")
+        for r in bed:
+            if r["dpi_pair_speedups"]:
+                fh.write("\nSpeed-up on %s processes at %s carriers, each "
+                         "repeat's runs paired (dpiFoam; LIGGGHTS; "
+                         "OpenFOAM): %s; %s; %s\n"
+                         % (r["np"], r["N"], r["dpi_pair_speedups"],
+                            r["lig_pair_speedups"] or "-",
+                            r["of_pair_speedups"] or "-"))
+        fh.write("\n")
         fh.write("| carriers | np | contacts/particle at the start "
                  "(geometric) | dpiFoam after 1st fluid step -> end | "
                  "LIGGGHTS start -> end | OpenFOAM end | KE at the end "
