@@ -822,8 +822,8 @@ void Foam::demPartition::collect
         col.setSize(nMesh_);
     }
 
-    // The contacts leave the engine's store as they are handed back, so
-    // the store shrinks as the mesh side's lists grow
+    // The contacts leave the engine's store as they are handed back (it is
+    // freed after the return: releaseHistory below)
     DynamicList<label> takenKeys;
     DynamicList<vector> takenXi;
     const auto take = [&](const label k, labelList& rowKeys, List<vector>& rowXi)
