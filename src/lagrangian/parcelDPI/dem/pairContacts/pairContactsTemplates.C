@@ -136,6 +136,33 @@ void Foam::pairContacts::forces
         }
         columnGeometry(n);
 
+        // The touching pairs' kinematics, in a loop of their own: each
+        // iteration is short and independent of the others, so the
+        // processor overlaps the velocity gathers of several pairs. In the
+        // law loop they sat at the head of each pair's chain of dependent
+        // arithmetic (slip, history, its magnitude, the sliding test).
+        if (vn_.size() < n)
+        {
+            vn_.setSize(n);
+            vs_.setSize(n);
+        }
+        for (label k = 0; k < n; ++k)
+        {
+            if (!(delta_[k] > 0))
+            {
+                continue;
+            }
+            const label i = selectedI_[k];
+            const label j = nearJ_[selectedM_[k]];
+            const vector nk(dx_[k], dy_[k], dz_[k]);
+            const scalar ci = s.r[i] - 0.5*delta_[k];
+            const scalar cj = s.r[j] - 0.5*delta_[k];
+            const vector vr(s.v[i] - s.v[j]);
+            const scalar vn = vr & nk;
+            vn_[k] = vn;
+            vs_[k] = (vr - vn*nk) - ((ci*s.omega[i] + cj*s.omega[j]) ^ nk);
+        }
+
         // Then each pair's contact and its law, in order. (The contact
         // is built where the law uses it: kept in a block's array between
         // two loops it cost its stores and loads, ~170 bytes a pair.)
@@ -184,10 +211,8 @@ void Foam::pairContacts::forces
             // The kinematics of a touching contact
             c.ci = s.r[i] - 0.5*c.delta;
             c.cj = s.r[j] - 0.5*c.delta;
-            const vector vr(s.v[i] - s.v[j]);
-            c.vn = vr & c.n;
-            c.vs =
-                (vr - c.vn*c.n) - ((c.ci*s.omega[i] + c.cj*s.omega[j]) ^ c.n);
+            c.vn = vn_[k];
+            c.vs = vs_[k];
             c.omegaRel = s.omega[i] - s.omega[j];
 
             vector xi(nearXi[m]);
