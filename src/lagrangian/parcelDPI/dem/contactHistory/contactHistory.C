@@ -165,6 +165,13 @@ void Foam::contactHistory::clear()
 }
 
 
+void Foam::contactHistory::reserve(const label n)
+{
+    store_.reserve(store_.size() + n);
+    callOf_.reserve(callOf_.size() + n);
+}
+
+
 Foam::vector Foam::contactHistory::find
 (
     const label owner,

@@ -483,6 +483,13 @@ void Foam::demEngine::history
 }
 
 
+void Foam::demEngine::reserveHistory(const label n)
+{
+    editHistory();
+    history_.reserve(n);
+}
+
+
 void Foam::demEngine::setHistory
 (
     const label globalId,

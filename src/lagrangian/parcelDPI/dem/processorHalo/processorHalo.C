@@ -115,6 +115,12 @@ void Foam::processorHalo::build
         {
             const List<labelList> allKeys(is);
             const List<List<vector>> allXi(is);
+            label nXi = 0;
+            forAll(allXi, k)
+            {
+                nXi += allXi[k].size();
+            }
+            engine->reserveHistory(nXi);
             forAll(globalId, k)
             {
                 engine->setHistory(globalId[k], allKeys[k], allXi[k]);
