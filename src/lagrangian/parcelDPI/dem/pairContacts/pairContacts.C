@@ -178,6 +178,7 @@ namespace Foam
         scalar* __restrict__ dz,
         scalar* __restrict__ delta,
         scalar* __restrict__ a,
+        scalar* __restrict__ ratio,
         const scalar* __restrict__ r2,
         const scalar* __restrict__ rSum,
         const scalar* __restrict__ Rstar
@@ -193,6 +194,9 @@ namespace Foam
             // A separated pair's is not used: 0, not the square root of a
             // negative number
             a[k] = std::sqrt(Rstar[k]*std::max(delta[k], scalar(0)));
+            // The overlap ratio the diagnostics record (a division per
+            // touching pair, here two per instruction)
+            ratio[k] = delta[k]/Rstar[k];
         }
     }
 }
@@ -208,6 +212,7 @@ void Foam::pairContacts::columnGeometry(const label n) const
         dz_.data(),
         delta_.data(),
         a_.data(),
+        ratio_.data(),
         r2_.cdata(),
         rSum_.cdata(),
         Rstar_.cdata()

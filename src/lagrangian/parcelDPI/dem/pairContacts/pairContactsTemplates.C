@@ -73,13 +73,26 @@ void Foam::pairContacts::forces
         {
             selectedM_.setSize(nBlock);
             selectedI_.setSize(nBlock);
+            dx_.setSize(nBlock);
+            dy_.setSize(nBlock);
+            dz_.setSize(nBlock);
+            r2_.setSize(nBlock);
+            rSum_.setSize(nBlock);
+            Rstar_.setSize(nBlock);
+            delta_.setSize(nBlock);
+            a_.setSize(nBlock);
+            ratio_.setSize(nBlock);
         }
 
+        // The pairs within range, with the inputs of their geometry: the
+        // separation the test computed is kept (gathered and subtracted
+        // once), and the radius sum and R*
         label n = 0;
         for (label a = a0; a < a1; ++a)
         {
             const label i = pairRow_[a];
             const point xi0 = s.x[i];
+            const scalar ri = s.r[i];
 
             for (label m = nearStart_[a]; m < nearStart_[a + 1]; ++m)
             {
@@ -88,13 +101,21 @@ void Foam::pairContacts::forces
                     __builtin_prefetch(&s.x[nearJ_[m + ahead]]);
                 }
 
-                const scalar r2 = magSqr(xi0 - s.x[nearJ_[m]]);
+                const label j = nearJ_[m];
+                const vector d(xi0 - s.x[j]);
+                const scalar r2 = magSqr(d);
                 const bool in = !(r2 >= nearCut2_[m]);
 
                 if (in)
                 {
                     selectedM_[n] = m;
                     selectedI_[n] = i;
+                    dx_[n] = d.x();
+                    dy_[n] = d.y();
+                    dz_[n] = d.z();
+                    r2_[n] = r2;
+                    rSum_[n] = ri + s.r[j];
+                    Rstar_[n] = nearRstar_[m];
                     ++n;
                 }
                 else if (advance && nearHasXi[m])
@@ -106,34 +127,8 @@ void Foam::pairContacts::forces
         }
         a0 = a1;
 
-        // The selected pairs' geometry: the separations (gathered from the
-        // rows), then the square roots and divisions column by column (two
-        // pairs per instruction)
-        if (dx_.size() < n)
-        {
-            dx_.setSize(n);
-            dy_.setSize(n);
-            dz_.setSize(n);
-            r2_.setSize(n);
-            rSum_.setSize(n);
-            Rstar_.setSize(n);
-            delta_.setSize(n);
-            a_.setSize(n);
-        }
-        for (label k = 0; k < n; ++k)
-        {
-            const label m = selectedM_[k];
-            const label i = selectedI_[k];
-            const label j = nearJ_[m];
-
-            const vector d(s.x[i] - s.x[j]);
-            dx_[k] = d.x();
-            dy_[k] = d.y();
-            dz_[k] = d.z();
-            r2_[k] = magSqr(d);
-            rSum_[k] = s.r[i] + s.r[j];
-            Rstar_[k] = nearRstar_[m];
-        }
+        // The selected pairs' square roots and divisions, column by column
+        // (two pairs per instruction)
         columnGeometry(n);
 
         // The touching pairs' kinematics, in a loop of their own: each
@@ -244,7 +239,7 @@ void Foam::pairContacts::forces
             if (i < nOwned)
             {
                 ++diag.nPairContacts;
-                diag.record(c.delta/c.Rstar, -c.vn, s.globalId[i], s.globalId[j]);
+                diag.record(ratio_[k], -c.vn, s.globalId[i], s.globalId[j]);
             }
         }
     }
