@@ -37,8 +37,8 @@ void Foam::pairContacts::forces
     //
     // Loops over a block of rows: the pairs within range are selected,
     // then their geometry computed in columns (the square roots and
-    // divisions of two pairs per instruction), then each pair's contact
-    // and law. With the geometry inline in one loop per pair it formed one
+    // divisions of two pairs per instruction), then the touching pairs'
+    // velocities, then each pair's contact and law. With the geometry inline in one loop per pair it formed one
     // long chain per pair (packed bed of 10,000 carriers: pair term 6.1 ->
     // 4.9 s when split out). The law loop takes the selected pairs in the
     // order of a single sweep, so every sum takes its terms in the same
@@ -50,8 +50,8 @@ void Foam::pairContacts::forces
     const label ahead = 16;
     const label nRows = pairRow_.size();
 
-    // Near pairs per block: the block's selection and geometry columns
-    // (~80 bytes a pair) stay in the first-level cache
+    // Near pairs per block: the block's selection, geometry and
+    // kinematics columns (~120 bytes a pair) stay in the first-level cache
     const label blockPairs = 64;
 
     label a0 = 0;
