@@ -38,9 +38,10 @@ void Foam::pairContacts::forces
     // Loops over a block of rows: the pairs within range are selected,
     // then their geometry computed in columns (the square roots and
     // divisions of two pairs per instruction), then the touching pairs'
-    // velocities, then each pair's contact and law. With the geometry inline in one loop per pair it formed one
-    // long chain per pair (packed bed of 10,000 carriers: pair term 6.1 ->
-    // 4.9 s when split out). The law loop takes the selected pairs in the
+    // velocities, then each pair's contact and law. With the geometry
+    // inline in one loop per pair it formed one long chain per pair
+    // (packed bed of 10,000 carriers: pair term 6.1 -> 4.9 s when split
+    // out). The law loop takes the selected pairs in the
     // order of a single sweep, so every sum takes its terms in the same
     // order (bit-identical results).
     //
@@ -82,6 +83,8 @@ void Foam::pairContacts::forces
             delta_.setSize(nBlock);
             a_.setSize(nBlock);
             ratio_.setSize(nBlock);
+            vn_.setSize(nBlock);
+            vs_.setSize(nBlock);
         }
 
         // The pairs within range, with the inputs of their geometry: the
@@ -136,11 +139,6 @@ void Foam::pairContacts::forces
         // processor overlaps the velocity gathers of several pairs. In the
         // law loop they sat at the head of each pair's chain of dependent
         // arithmetic (slip, history, its magnitude, the sliding test).
-        if (vn_.size() < n)
-        {
-            vn_.setSize(n);
-            vs_.setSize(n);
-        }
         for (label k = 0; k < n; ++k)
         {
             if (!(delta_[k] > 0))
