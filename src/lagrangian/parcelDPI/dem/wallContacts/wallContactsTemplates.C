@@ -18,6 +18,8 @@ void Foam::wallContacts::rowForces
     const Law& law,
     const demState& s,
     const label p,
+    const label first,
+    const label last,
     const demMaterials& materials,
     const scalar dt,
     const bool advance,
@@ -29,35 +31,10 @@ void Foam::wallContacts::rowForces
     new_.clear();
 
     const scalar rp = s.r[p];
-    const label nWalls = walls_.size();
-
-    // The contacts of all walls first: most rows near a wall touch none
-    // and need nothing more
-    buf_.clear();
-    bufWall_.clear();
-    forAll(walls_, w)
-    {
-        const label first = candStart_[p*nWalls + w];
-        const label nCand = candStart_[p*nWalls + w + 1] - first;
-        if (nCand)
-        {
-            walls_[w].findContacts
-            (
-                s.x[p],
-                rp + law.maxRange(rp),
-                SubList<label>(cand_, nCand, first),
-                buf_
-            );
-            while (bufWall_.size() < buf_.size())
-            {
-                bufWall_.append(w);
-            }
-        }
-    }
 
     DynamicList<contactHistory::wallContact>& old = h.wallState(p);
 
-    if (buf_.empty())
+    if (first == last)
     {
         if (advance)
         {
@@ -82,7 +59,7 @@ void Foam::wallContacts::rowForces
     c.cj = 0;
     c.omegaRel = s.omega[p];
 
-    forAll(buf_, b)
+    for (label b = first; b < last; ++b)
     {
         const demWallContact& wc = buf_[b];
         const label w = bufWall_[b];
@@ -219,9 +196,48 @@ void Foam::wallContacts::forces
         return;
     }
 
-    for (const label p : nearWall_)
+    // The contacts of every near-wall row are found first, then their
+    // laws evaluated: apart, one row's search (closest points, square
+    // roots, the normals' divisions) and the next row's law do not wait on
+    // each other, which they did in a single pass of search then law
+    const label nWalls = walls_.size();
+    buf_.clear();
+    bufWall_.clear();
+    bufStart_.setSize(nearWall_.size() + 1);
+    forAll(nearWall_, k)
     {
-        rowForces(law, s, p, materials, dt, advance, h, diag);
+        const label p = nearWall_[k];
+        bufStart_[k] = buf_.size();
+        forAll(walls_, w)
+        {
+            const label first = candStart_[p*nWalls + w];
+            const label nCand = candStart_[p*nWalls + w + 1] - first;
+            if (nCand)
+            {
+                walls_[w].findContacts
+                (
+                    s.x[p],
+                    s.r[p] + law.maxRange(s.r[p]),
+                    SubList<label>(cand_, nCand, first),
+                    buf_
+                );
+                while (bufWall_.size() < buf_.size())
+                {
+                    bufWall_.append(w);
+                }
+            }
+        }
+    }
+    bufStart_[nearWall_.size()] = buf_.size();
+
+    forAll(nearWall_, k)
+    {
+        const label p = nearWall_[k];
+        rowForces
+        (
+            law, s, p, bufStart_[k], bufStart_[k + 1], materials, dt,
+            advance, h, diag
+        );
         for (const contribution& con : contrib_)
         {
             f[p] += con.f;
