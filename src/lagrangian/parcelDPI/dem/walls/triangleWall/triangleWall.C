@@ -414,8 +414,6 @@ void Foam::demWalls::triangleWall::contactsOf
 {
     work_.clear();
 
-    const scalar reach2 = sqr(reach)*(1 + 1e-12);
-
     for (const label* tp = first; tp != last; ++tp)
     {
         const label t = *tp;
@@ -435,17 +433,7 @@ void Foam::demWalls::triangleWall::contactsOf
             x, points_[f[0]], points_[f[1]], points_[f[2]], where, e
         );
 
-        // A closest point clearly out of reach (most of a flat patch's
-        // triangles beside the one under the sphere) is rejected on its
-        // squared distance, without waiting for the square root; the margin
-        // (1e-12, far above the root's rounding) leaves every case that the
-        // exact test below could decide either way to that test
-        const scalar d2 = magSqr(x - q);
-        if (d2 > reach2)
-        {
-            continue;
-        }
-        const scalar d = sqrt(d2);
+        const scalar d = mag(x - q);
         if (d >= reach)
         {
             continue;
