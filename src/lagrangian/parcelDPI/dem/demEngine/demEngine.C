@@ -408,11 +408,14 @@ void Foam::demEngine::evolve
         tc = wallClock();
 
         // Total forces (as totalForces) and the second half kick in one
-        // pass over the rows
+        // pass over the rows. The energies are the diagnostics' of the
+        // evolve's end (written per fluid step, checked in checkEndState):
+        // summed at its last sub-step only, the other sub-steps' kicks are
+        // free of their two running sums
+        const bool last = (step + 1 == nSub);
         scalar Ek = 0, Er = 0;
         for (label p = 0; p < n; ++p)
         {
-            const scalar M = s.N[p]*s.m[p];
             const vector f(totalForce(s, p));
             const vector t(tContact_[p]);
             s.f[p] = f;
@@ -421,8 +424,12 @@ void Foam::demEngine::evolve
             const vector omega(s.omega[p] + halfStepOmega_[p]*t);
             s.v[p] = v;
             s.omega[p] = omega;
-            Ek += 0.5*M*magSqr(v);
-            Er += 0.5*(0.4*M*sqr(s.r[p]))*magSqr(omega);
+            if (last)
+            {
+                const scalar M = s.N[p]*s.m[p];
+                Ek += 0.5*M*magSqr(v);
+                Er += 0.5*(0.4*M*sqr(s.r[p]))*magSqr(omega);
+            }
         }
         for (label p = n; p < s.size(); ++p)
         {
@@ -434,8 +441,11 @@ void Foam::demEngine::evolve
 
         time_ = t0 + (step + 1)*dt;
         diag_.time = time_;
-        diag_.kineticEnergy = Ek;
-        diag_.rotationalEnergy = Er;
+        if (last)
+        {
+            diag_.kineticEnergy = Ek;
+            diag_.rotationalEnergy = Er;
+        }
         ++nSteps_;
         nParticleSteps_ += n;
 
