@@ -719,6 +719,15 @@ void Foam::DPICloud<CloudType>::copyToState(const bool contactForcesValid)
     // are loaded once, at the first step (a restart)
     if (!historyLoaded_)
     {
+        // The store sized once (it would otherwise grow by doubling, up to
+        // twice the contacts in memory at the peak of a large restart)
+        label nContacts = 0;
+        for (const parcelType& p : *this)
+        {
+            nContacts += p.contactKeys().size();
+        }
+        engine_->reserveHistory(nContacts);
+
         for (const parcelType& p : *this)
         {
             engine_->setHistory(p.globalId(), p.contactKeys(), p.contactXi());
