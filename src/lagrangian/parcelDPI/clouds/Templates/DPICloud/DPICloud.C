@@ -719,8 +719,9 @@ void Foam::DPICloud<CloudType>::copyToState(const bool contactForcesValid)
     // are loaded once, at the first step (a restart)
     if (!historyLoaded_)
     {
-        // The store sized once (it would otherwise grow by doubling, up to
-        // twice the contacts in memory at the peak of a large restart)
+        // The store sized once (it would otherwise grow by doubling,
+        // copying itself at each growth; measured on a 50,000 restart this
+        // does not move the run's peak memory)
         label nContacts = 0;
         for (const parcelType& p : *this)
         {
