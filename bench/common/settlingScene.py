@@ -365,7 +365,7 @@ dem
     }
 
     // Verlet skin: the default (smallest diameter), stated for the peers
-    neighbourSearch { skin %(skin)g; }
+    neighbourSearch { skin %(skin)g; order %(sweep)s; }
 
     timeStepCheck { maxImpactVelocity %(vmax)g; }
 }
@@ -383,7 +383,8 @@ injectors
 }
 """ % dict(preamble=dpiCloudPreamble(DENSITY), rho=DENSITY, dt=dt, d=DIAMETER, E=YOUNG, nu=POISSON,
            e=RESTITUTION, mu=FRICTION, skin=args.skin,
-           vmax=args.max_impact_velocity, idOrder=args.dpi_order))
+           vmax=args.max_impact_velocity, idOrder=args.dpi_order,
+           sweep=args.dpi_sweep))
 
 
 def writeLiggghtsData(path, x, v, L, title):
@@ -676,6 +677,11 @@ def main():
                     default="none",
                     help="dpiFoam: the injector's order (globalIds as "
                     "listed, or along a Morton curve)")
+    ap.add_argument("--dpi-sweep", choices=("globalId", "morton"),
+                    default="globalId",
+                    help="dpiFoam's pair sweep and sums (neighbourSearch/"
+                         "order): in globalId order (the default), or along "
+                         "a Morton curve of the positions at each fluid step")
     ap.add_argument("--of-cell", type=float, default=2.0,
                     help="openfoam: mesh cell edge in diameters")
     ap.add_argument("--of-write-end", action="store_true",

@@ -765,27 +765,29 @@ void Foam::demPartition::distribute
     keys.clear();
     xi.clear();
 
-    // The rows in increasing globalId. The pair sweep visits the pairs in
-    // the globalId order of their first row (for sums in a fixed order),
-    // so rows in that order are read one after the other, and a bed
-    // numbered along a space-filling curve (`order morton` at injection)
-    // has every row's partners near it in memory. The rows above are in
-    // their mesh order, with the arrivals in the places of the rows sent
-    // away, which parcels crossing processors leave unsorted. (Results do
-    // not depend on the row order.)
+    // The rows in increasing key (demEngine::orderRows: the globalId, or
+    // with neighbourSearch/order morton a Morton code of the position).
+    // The pair sweep visits the pairs in the key order of their first row
+    // (for sums in a fixed order), so rows in that order are read one after
+    // the other, and rows along a space-filling curve (order morton, or a
+    // bed numbered along one at injection) have their partners near them
+    // in memory. The rows above are in their mesh order, with the arrivals
+    // in the places of the rows sent away, which parcels crossing
+    // processors leave unsorted. (Results do not depend on the row order.)
+    engine_.orderRows(dem_);
     {
         // Often already in order (a settled bed whose rows stayed with
         // their processors): one pass decides, the sort only if not
-        const SubList<label> ids(dem_.globalId, nOwned);
+        const SubList<uint64_t> keys(dem_.key, nOwned);
         bool sorted = true;
         for (label k = 1; k < nOwned && sorted; ++k)
         {
-            sorted = ids[k - 1] < ids[k];
+            sorted = keys[k - 1] < keys[k];
         }
         if (!sorted)
         {
             labelList order;
-            sortedOrder(ids, order);
+            sortedOrder(keys, order);
             dem_.reorder(order);
             fromProc_ = labelList(UIndirectList<label>(fromProc_, order));
             fromRow_ = labelList(UIndirectList<label>(fromRow_, order));
@@ -801,6 +803,7 @@ void Foam::demPartition::distribute
     }
 
     halo_.build(dem_, reach_, &engine_);
+    engine_.orderRows(dem_, nOwned);
 
     if (checkWhen_.size())
     {

@@ -344,7 +344,11 @@ void Foam::contactHistory::toNear
             const label idi = workingIds_[pairRow[a]];
             for (label k = nearStart[a]; k < nearStart[a + 1]; ++k)
             {
-                xi[k] = find(idi, workingIds_[nearJ[k]]);
+                // Stored as the smaller globalId's; the sweep's first row
+                // may be the other (neighbourSearch/order morton), whose
+                // spring is the opposite
+                const label idj = workingIds_[nearJ[k]];
+                xi[k] = idi < idj ? find(idi, idj) : -find(idj, idi);
                 has[k] = (xi[k] != vector::zero);
             }
         }
@@ -421,9 +425,13 @@ void Foam::contactHistory::flush
         {
             if (nearHasXi_[k] && nearXi_[k] != vector::zero)
             {
+                // As the smaller globalId's (toNear)
+                const label idj = workingIds_[nearJ[k]];
                 store_.push_back
                 (
-                    {key(idi, workingIds_[nearJ[k]]), nearXi_[k]}
+                    idi < idj
+                  ? entry{key(idi, idj), nearXi_[k]}
+                  : entry{key(idj, idi), -nearXi_[k]}
                 );
             }
         }

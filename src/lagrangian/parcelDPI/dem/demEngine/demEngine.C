@@ -76,7 +76,7 @@ Foam::scalar Foam::demEngine::readSkin(const dictionary& dict) const
     }
 
     const dictionary nsDict(dict.subOrEmptyDict("neighbourSearch"));
-    dictKeys::warnUnknown(nsDict, {"skin"});
+    dictKeys::warnUnknown(nsDict, {"skin", "order"});
     const scalar skin =
         nsDict.getOrDefault<scalar>("skin", dMin < GREAT ? dMin : 0);
     if (!(skin > 0))
@@ -239,8 +239,19 @@ Foam::demEngine::demEngine(const dictionary& dict, const polyMesh* mesh)
     timeHalo_(0),
     nSteps_(0),
     nParticleSteps_(0),
-    halo_(nullptr)
+    halo_(nullptr),
+    alongCurve_(readOrder(dict)),
+    frame_(mesh ? mesh->bounds() : boundBox()),
+    curveCell_(0)
 {
+    for (label i = 0; i < materials_.size(); ++i)
+    {
+        if (materials_.isParticleType(i))
+        {
+            curveCell_ = max(curveCell_, materials_.diameter(i));
+        }
+    }
+
     if (dict.getOrDefault<bool>("contactStatistics", false))
     {
         stats_.reset(new contactStatistics(materials_.names()));
@@ -256,7 +267,8 @@ Foam::demEngine::demEngine(const dictionary& dict, const polyMesh* mesh)
 
     Info<< "DEM engine: " << materials_.size() << " types "
         << materials_.names() << ", " << walls_.size() << " walls, skin "
-        << pairs_.search().skin() << " m" << endl;
+        << pairs_.search().skin() << " m, pairs swept in "
+        << (alongCurve_ ? "morton" : "globalId") << " order" << endl;
 
     timeStepCheck_.check
     (

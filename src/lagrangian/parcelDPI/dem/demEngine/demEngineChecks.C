@@ -8,7 +8,8 @@ License
 Description
     demEngine's checks of the state it is given and of the state it leaves:
     the coarsening factors and types before a fluid step, the travel per
-    DEM step and a non-finite state after it.
+    DEM step and a non-finite state after it; the order of the pair sweep
+    asked for, and the keys that give it.
 
 \*---------------------------------------------------------------------------*/
 
@@ -16,6 +17,38 @@ Description
 #include <cmath>
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+bool Foam::demEngine::readOrder(const dictionary& dict)
+{
+    const dictionary nsDict(dict.subOrEmptyDict("neighbourSearch"));
+    const word order(nsDict.getOrDefault<word>("order", "globalId"));
+    if (order != "globalId" && order != "morton")
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown neighbourSearch/order '" << order
+            << "' in dictionary " << dict.name() << nl
+            << "    Valid choices: globalId (the default), morton"
+            << exit(FatalIOError);
+    }
+    return order == "morton";
+}
+
+
+void Foam::demEngine::orderRows(demState& s, const label from) const
+{
+    if (!alongCurve_ || s.size() <= from)
+    {
+        return;
+    }
+    // Without a mesh (unit tests, serial) the rows' own box
+    s.setMortonKeys
+    (
+        frame_.valid() ? frame_ : boundBox(s.x, false),
+        curveCell_,
+        from
+    );
+}
+
 
 void Foam::demEngine::checkState(const demState& s) const
 {

@@ -10,6 +10,7 @@ License
 #include "UIndirectList.H"
 #include "scalarList.H"
 #include "vectorList.H"
+#include "mortonOrder.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -226,11 +227,33 @@ void Foam::demState::set
     N[row] = Ni;
     typeId[row] = typei;
     globalId[row] = globalIdi;
+    key[row] = uint64_t(globalIdi);
     fExt[row] = Zero;
     f[row] = Zero;
     torque[row] = Zero;
     fContact[row] = Zero;
     tContact[row] = Zero;
+}
+
+
+void Foam::demState::setMortonKeys
+(
+    const boundBox& frame,
+    const scalar cell,
+    const label from
+)
+{
+    // 11 bits per direction: 33 bits of code above the 31 of a
+    // non-negative label, one comparison of 64-bit integers
+    const label n = size() - from;
+    const List<uint64_t> codes
+    (
+        mortonOrder::codes(SubList<point>(x, n, from), cell, frame, 2047)
+    );
+    forAll(codes, k)
+    {
+        key[from + k] = (codes[k] << 31) | uint64_t(globalId[from + k]);
+    }
 }
 
 

@@ -104,7 +104,7 @@ bool Foam::neighbourSearch::needsRebuild
     {
         if
         (
-            s.globalId[i] != id0_[i]
+            s.key[i] != key0_[i]
          || magSqr(s.x[i] - x0_[i]) > maxMove2
         )
         {
@@ -138,7 +138,7 @@ void Foam::neighbourSearch::build
     const label n = s.size();
 
     x0_ = s.x;
-    id0_ = s.globalId;
+    key0_ = s.key;
     pairs_.clear();
     pairs_.reserve(nReleased_ + nReleased_/8);
     valid_ = true;
@@ -230,7 +230,7 @@ void Foam::neighbourSearch::build
     // again only when a particle's cell in it differs from the last one's:
     // rows in one cell share them, and so do the fine particles in one
     // coarse cell (the API coating a carrier), most of the searches. The
-    // pairs found are the same (the half list orders them by globalId).
+    // pairs found are the same (the half list orders them by key).
     struct column
     {
         std::vector<std::pair<std::uint64_t, label>>::const_iterator first;
@@ -306,7 +306,7 @@ void Foam::neighbourSearch::build
                             rp + s.r[q] + range(rp, s.r[q]) + skin_;
                         if (magSqr(xp - s.x[q]) < sqr(cut))
                         {
-                            if (s.globalId[p] < s.globalId[q])
+                            if (s.key[p] < s.key[q])
                             {
                                 pairs_.append(labelPair(p, q));
                             }

@@ -48,7 +48,7 @@ void Foam::pairContacts::build
         }
     );
 
-    // The half list in globalId order. Unless copyPairs_, the pairs of two
+    // The half list in key order (demState::key). Unless copyPairs_, the pairs of two
     // halo copies (rows from s.owned() on) are left out: only owned rows
     // are integrated, and the owners evaluate these pairs; their forces on
     // the copies would be thrown away (50,000 carriers on 2 processes: 1
@@ -59,14 +59,14 @@ void Foam::pairContacts::build
     {
         return pr.first() < firstCopy || pr.second() < firstCopy;
     };
-    const labelUList& id = s.globalId;
+    const UList<uint64_t>& key = s.key;
 
-    labelList byId(identity(n));
+    labelList byKey(identity(n));
     std::sort
     (
-        byId.begin(),
-        byId.end(),
-        [&id](const label a, const label b) { return id[a] < id[b]; }
+        byKey.begin(),
+        byKey.end(),
+        [&key](const label a, const label b) { return key[a] < key[b]; }
     );
 
     labelList fill(n, 0);
@@ -84,7 +84,7 @@ void Foam::pairContacts::build
     pairStart_.setSize(n + 1);
     label nRows = 0;
     label k = 0;
-    for (const label i : byId)
+    for (const label i : byKey)
     {
         if (fill[i])
         {
@@ -115,7 +115,7 @@ void Foam::pairContacts::build
         (
             pairJ_.begin() + pairStart_[a],
             pairJ_.begin() + pairStart_[a + 1],
-            [&id](const label a, const label b) { return id[a] < id[b]; }
+            [&key](const label a, const label b) { return key[a] < key[b]; }
         );
     }
 

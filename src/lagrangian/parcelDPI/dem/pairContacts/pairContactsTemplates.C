@@ -233,11 +233,14 @@ void Foam::pairContacts::forces
             t[j] += Tj;
 
             // Each pair counted once over all processors: where the row of
-            // the smaller globalId (i) is owned
+            // the smaller key (i) is owned; named by its ids in increasing
+            // order, whichever the sweep took first
             if (i < nOwned)
             {
                 ++diag.nPairContacts;
-                diag.record(ratio_[k], -c.vn, s.globalId[i], s.globalId[j]);
+                const label a = s.globalId[i];
+                const label b = s.globalId[j];
+                diag.record(ratio_[k], -c.vn, min(a, b), max(a, b));
             }
         }
     }

@@ -14,6 +14,7 @@ License
 #include "mathematicalConstants.H"
 #include "clockTime.H"
 #include "dictKeys.H"
+#include "mortonOrder.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -673,6 +674,44 @@ Foam::label Foam::DPICloud<CloudType>::inject
 
 
 template<class CloudType>
+void Foam::DPICloud<CloudType>::orderParcels()
+{
+    engine_->orderRows(state_);
+    if (!engine_->alongCurve())
+    {
+        return;
+    }
+
+    // The pairs are swept in key order, so rows in that order are read one
+    // after the other and a row's partners lie near it in memory. The keys
+    // move only as parcels cross cells, and a reorder costs a neighbour
+    // build (the search sees new rows): a few rows out of place are left
+    const UList<uint64_t>& keys = state_.key;
+    if (mortonOrder::nDescents(keys) <= keys.size()/100)
+    {
+        return;
+    }
+
+    labelList order;
+    sortedOrder(keys, order);
+    state_.reorder(order);
+
+    // The parcels to the same order (relinked, not copied: each in turn to
+    // the list's end), so that the rows come in it at the next steps
+    List<parcelType*> parcels(this->size());
+    label i = 0;
+    for (parcelType& p : *this)
+    {
+        parcels[i++] = &p;
+    }
+    for (const label k : order)
+    {
+        this->append(this->remove(parcels[k]));
+    }
+}
+
+
+template<class CloudType>
 void Foam::DPICloud<CloudType>::copyToState(const bool contactForcesValid)
 {
     state_.clear();
@@ -1284,6 +1323,11 @@ void Foam::DPICloud<CloudType>::motion
     const label nInjected = inject(t1 - Dt, t1);
 
     copyToState(nInjected == 0);
+    if (!partition_.valid())
+    {
+        // (the DEM's own partition orders its rows: demPartition)
+        orderParcels();
+    }
 
     // The start (or restart) and every injection: no parcel inside another
     // or a wall, no parcel without size (a collective decision, on the DEM
@@ -1383,6 +1427,7 @@ void Foam::DPICloud<CloudType>::motion
             // contacts it already has (walls included), so they continue
             // here as they do at its owner
             halo_->build(state_, haloReach(Dt), &engine_());
+            engine_->orderRows(state_, state_.owned());
         }
         if (checkWhen.size())
         {

@@ -7,8 +7,6 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "mortonOrder.H"
-#include "boundBox.H"
-
 #include <algorithm>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -31,33 +29,37 @@ uint64_t Foam::mortonOrder::code(const label i, const label j, const label k)
 }
 
 
-Foam::labelList Foam::mortonOrder::order
+Foam::List<uint64_t> Foam::mortonOrder::codes
 (
     const UList<point>& x,
-    const scalar cell
+    const scalar cell,
+    const boundBox& frame,
+    const label nCells
 )
 {
-    labelList idx(identity(x.size()));
-    if (x.size() < 2)
+    const scalar span = max(cmptMax(frame.span()), VSMALL);
+    const scalar h = max(cell, span/nCells);
+
+    // Clamped before the conversion (a point far outside would overflow)
+    const scalar top = nCells;
+    const auto cellOf = [top](const scalar s)
     {
-        return idx;
-    }
+        return label(min(max(s, scalar(0)), top));
+    };
 
-    const boundBox bb(x, false);
-    const scalar span = max(cmptMax(bb.span()), VSMALL);
-    const scalar h = max(cell, span/maxCells);
-
-    List<uint64_t> codes(x.size());
+    List<uint64_t> c(x.size());
     forAll(x, i)
     {
-        const vector c((x[i] - bb.min())/h);
-        codes[i] = code
-        (
-            min(label(c.x()), maxCells),
-            min(label(c.y()), maxCells),
-            min(label(c.z()), maxCells)
-        );
+        const vector s((x[i] - frame.min())/h);
+        c[i] = code(cellOf(s.x()), cellOf(s.y()), cellOf(s.z()));
     }
+    return c;
+}
+
+
+Foam::labelList Foam::mortonOrder::order(const UList<uint64_t>& codes)
+{
+    labelList idx(identity(codes.size()));
 
     // Stable: equal codes keep the list's order, so the result is the same
     // on every processor (each sorts the same list)
@@ -69,6 +71,31 @@ Foam::labelList Foam::mortonOrder::order
     );
 
     return idx;
+}
+
+
+Foam::labelList Foam::mortonOrder::order
+(
+    const UList<point>& x,
+    const scalar cell
+)
+{
+    if (x.size() < 2)
+    {
+        return identity(x.size());
+    }
+    return order(codes(x, cell, boundBox(x, false)));
+}
+
+
+Foam::label Foam::mortonOrder::nDescents(const UList<uint64_t>& codes)
+{
+    label n = 0;
+    for (label i = 1; i < codes.size(); ++i)
+    {
+        n += codes[i] < codes[i - 1];
+    }
+    return n;
 }
 
 
