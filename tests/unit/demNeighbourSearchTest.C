@@ -211,6 +211,22 @@ demState pile()
     return s;
 }
 
+// The rows of s in a seeded random order (row k is s's row order[k]);
+// forces zero and keys the globalIds, as a fresh copy of the parcels
+demState shuffledRows(const demState& s, labelList& order)
+{
+    std::mt19937 gen(99);
+    order = identity(s.size());
+    std::shuffle(order.begin(), order.end(), gen);
+    demState shuffled;
+    for (const label i : order)
+    {
+        shuffled.append(s.x[i], s.v[i], s.omega[i], s.r[i], s.m[i],
+                        s.N[i], s.typeId[i], s.globalId[i]);
+    }
+    return shuffled;
+}
+
 // Row i of sa (engine ea) and row j of sb (engine eb) hold the same
 // particle in the same state, to the bit, with the same contact history
 void expectSameRow
@@ -262,15 +278,8 @@ TEST(demNeighbourSearch, historySurvivesRowReordering)
     EXPECT_GT(a.diagnostics().nWallContacts, 0);
 
     // Shuffle b's rows
-    std::mt19937 gen(99);
-    labelList order(identity(sb.size()));
-    std::shuffle(order.begin(), order.end(), gen);
-    demState shuffled;
-    for (const label i : order)
-    {
-        shuffled.append(sb.x[i], sb.v[i], sb.omega[i], sb.r[i], sb.m[i],
-                        sb.N[i], sb.typeId[i], sb.globalId[i]);
-    }
+    labelList order;
+    demState shuffled(shuffledRows(sb, order));
 
     a.evolve(sa, 300*1e-5, g);
     b.evolve(shuffled, 300*1e-5, g);
@@ -333,15 +342,8 @@ TEST(demNeighbourSearch, mortonSweepIndependentOfRowOrder)
         }
     }
     EXPECT_GT(reversed, 0) << "no touching pair swept from its larger id";
-    std::mt19937 gen(99);
-    labelList order(identity(sb.size()));
-    std::shuffle(order.begin(), order.end(), gen);
-    demState shuffled;
-    for (const label i : order)
-    {
-        shuffled.append(sb.x[i], sb.v[i], sb.omega[i], sb.r[i], sb.m[i],
-                        sb.N[i], sb.typeId[i], sb.globalId[i]);
-    }
+    labelList order;
+    demState shuffled(shuffledRows(sb, order));
 
     // The next fluid step's keys, from the positions it starts from
     a.orderRows(sa);
