@@ -241,17 +241,8 @@ Foam::demEngine::demEngine(const dictionary& dict, const polyMesh* mesh)
     nParticleSteps_(0),
     halo_(nullptr),
     alongCurve_(readOrder(dict)),
-    frame_(mesh ? mesh->bounds() : boundBox()),
-    curveCell_(0)
+    frame_(mesh ? mesh->bounds() : boundBox())
 {
-    for (label i = 0; i < materials_.size(); ++i)
-    {
-        if (materials_.isParticleType(i))
-        {
-            curveCell_ = max(curveCell_, materials_.diameter(i));
-        }
-    }
-
     if (dict.getOrDefault<bool>("contactStatistics", false))
     {
         stats_.reset(new contactStatistics(materials_.names()));

@@ -44,7 +44,7 @@ void Foam::demEngine::orderRows(demState& s, const label from) const
     s.setMortonKeys
     (
         frame_.valid() ? frame_ : boundBox(s.x, false),
-        curveCell_,
+        materials_.maxDiameter(),
         from
     );
 }

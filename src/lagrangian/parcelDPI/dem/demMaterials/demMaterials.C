@@ -340,4 +340,16 @@ Foam::scalar Foam::demMaterials::parcelN() const
 }
 
 
+Foam::scalar Foam::demMaterials::maxDiameter() const
+{
+    // Wall materials have none (negative)
+    scalar d = 0;
+    for (const scalar di : diameter_)
+    {
+        d = max(d, di);
+    }
+    return d;
+}
+
+
 // ************************************************************************* //

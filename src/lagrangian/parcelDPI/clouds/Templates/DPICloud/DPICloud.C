@@ -569,11 +569,7 @@ Foam::label Foam::DPICloud<CloudType>::inject
     const clockTime timer;
 
     // The curve's cell for `order morton`: the largest particle
-    scalar dMax = 0;
-    for (label typei = 0; typei < mat.size(); ++typei)
-    {
-        dMax = max(dMax, mat.diameter(typei));
-    }
+    const scalar dMax = mat.maxDiameter();
 
     DynamicList<injectionSpec> specs;
     forAll(injectors_, i)
