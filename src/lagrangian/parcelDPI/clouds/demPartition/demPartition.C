@@ -225,7 +225,6 @@ void Foam::demPartition::partition
     Pstream::scatter(leafProc_);
     Pstream::scatter(regions_);
 
-    halo_.setBoxes(regions_);
     repartition_ = false;
     ++nPartitions_;
 
@@ -383,10 +382,11 @@ Foam::demPartition::demPartition
     nMesh_(0),
     nDemOwned_(0),
     nDemRows_(0),
-    halo_(mesh),
+    halo_(),
     keys_(nullptr),
     xi_(nullptr),
-    reach_(0),
+    range_(0),
+    margin_(0),
     checkWhen_(),
     vecCols_(),
     scaCols_()
@@ -540,13 +540,15 @@ void Foam::demPartition::setInputs
 (
     List<labelList>& keys,
     List<List<vector>>& xi,
-    const scalar reach,
+    const scalar range,
+    const scalar margin,
     const word& checkWhen
 )
 {
     keys_ = &keys;
     xi_ = &xi;
-    reach_ = reach;
+    range_ = range;
+    margin_ = margin;
     checkWhen_ = checkWhen;
 }
 
@@ -802,7 +804,7 @@ void Foam::demPartition::distribute
         }
     }
 
-    halo_.build(dem_, reach_, &engine_);
+    halo_.build(dem_, range_, margin_, &engine_);
     engine_.orderRows(dem_, nOwned);
 
     if (checkWhen_.size())

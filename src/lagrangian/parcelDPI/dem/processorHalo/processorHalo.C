@@ -14,37 +14,77 @@ License
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::processorHalo::processorHalo(const polyMesh& mesh)
+Foam::processorHalo::processorHalo()
 :
-    procBb_(Pstream::nProcs()),
+    homeBox_(boundBox::invertedBox),
     sendRows_(Pstream::nProcs()),
     recvStart_(Pstream::nProcs(), 0),
-    recvSize_(Pstream::nProcs(), 0)
+    recvSize_(Pstream::nProcs(), 0),
+    range_(0),
+    margin_(0),
+    engine_(nullptr),
+    x0_(),
+    stepsLeft_(labelMax),
+    nBuilds_(0),
+    nRebuilds_(0),
+    warned_(false)
+{}
+
+
+Foam::processorHalo::processorHalo(const polyMesh& mesh)
+:
+    processorHalo()
 {
-    procBb_[Pstream::myProcNo()] = boundBox(mesh.points(), false);
-    Pstream::gatherList(procBb_);
-    Pstream::scatterList(procBb_);
+    homeBox_ = boundBox(mesh.points(), false);
 }
 
 
-// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::processorHalo::build
-(
-    demState& s,
-    const scalar reach,
-    demEngine* engine
-)
+void Foam::processorHalo::send(demState& s)
 {
     const label nOwned = s.size();
     s.nOwned = nOwned;
+    x0_ = SubList<point>(s.x, nOwned);
+    ++nBuilds_;
 
+    // The box of each processor's owned parcels and home (none: an
+    // inverted box, which contains nothing however far it is grown)
+    List<boundBox> boxes(Pstream::nProcs(), homeBox_);
+    boxes[Pstream::myProcNo()].add(x0_);
+    Pstream::gatherList(boxes);
+    Pstream::scatterList(boxes);
+
+    // The sub-steps this halo serves: two parcels at 1.5 x the fastest
+    // speed now (moderate acceleration, as the margin was chosen) close
+    // at most the margin (a fixed count, the same on every processor: no
+    // collective at the sub-steps in between)
+    scalar v2Max = 0;
+    for (label p = 0; p < nOwned; ++p)
+    {
+        v2Max = max(v2Max, magSqr(s.v[p]));
+    }
+    reduce(v2Max, maxOp<scalar>());
+    stepsLeft_ = labelMax;
+    if (engine_ && v2Max > 0)
+    {
+        // (1e-6: a margin made for the whole fluid step serves all of it,
+        // whatever the rounding of the quotient)
+        const scalar steps =
+            margin_/(3*sqrt(v2Max)*engine_->timeStep()) + 1e-6;
+        if (steps < labelMax)
+        {
+            stepsLeft_ = max(label(1), label(steps));
+        }
+    }
+
+    const scalar reach = range_ + margin_;
     forAll(sendRows_, proci)
     {
         DynamicList<label> rows;
         if (proci != Pstream::myProcNo())
         {
-            boundBox bb(procBb_[proci]);
+            boundBox bb(boxes[proci]);
             bb.min() -= vector::uniform(reach);
             bb.max() += vector::uniform(reach);
             for (label p = 0; p < nOwned; ++p)
@@ -71,8 +111,11 @@ void Foam::processorHalo::build
         }
         UOPstream os(proci, pBufs);
         s.writeRows(os, rows);
-        os  << (engine != nullptr);
-        if (engine)
+        // The owner's sweep keys: within a fluid step they are no longer
+        // those of the ghosts' positions (demEngine::orderRows)
+        os  << List<uint64_t>(UIndirectList<uint64_t>(s.key, rows));
+        os  << (engine_ != nullptr);
+        if (engine_)
         {
             List<labelList> allKeys(rows.size());
             List<List<vector>> allXi(rows.size());
@@ -80,7 +123,7 @@ void Foam::processorHalo::build
             {
                 keys.clear();
                 xi.clear();
-                engine->history(s.globalId[rows[k]], keys, xi);
+                engine_->history(s.globalId[rows[k]], keys, xi);
                 allKeys[k] = keys;
                 allXi[k] = xi;
             }
@@ -104,6 +147,11 @@ void Foam::processorHalo::build
         const label start = s.size();
         recvStart_[proci] = start;
         recvSize_[proci] = s.readRows(is);
+        const List<uint64_t> sweepKeys(is);
+        forAll(sweepKeys, k)
+        {
+            s.key[start + k] = sweepKeys[k];
+        }
         const labelList globalId
         (
             SubList<label>(s.globalId, recvSize_[proci], start)
@@ -111,7 +159,7 @@ void Foam::processorHalo::build
 
         bool withHistory = false;
         is  >> withHistory;
-        if (withHistory && engine)
+        if (withHistory && engine_)
         {
             const List<labelList> allKeys(is);
             const List<List<vector>> allXi(is);
@@ -120,18 +168,78 @@ void Foam::processorHalo::build
             {
                 nXi += allXi[k].size();
             }
-            engine->reserveHistory(nXi);
+            engine_->reserveHistory(nXi);
             forAll(globalId, k)
             {
-                engine->setHistory(globalId[k], allKeys[k], allXi[k]);
+                engine_->setHistory(globalId[k], allKeys[k], allXi[k]);
             }
         }
     }
 }
 
 
+void Foam::processorHalo::rebuild(demState& s)
+{
+    // The margin assumed no parcel would travel more than half of it
+    // before now: checked (a parcel accelerated harder may have missed a
+    // contact across a processor boundary, which serial would not)
+    const label nOwned = s.owned();
+    scalar travel2 = 0;
+    for (label p = 0; p < nOwned; ++p)
+    {
+        travel2 = max(travel2, magSqr(s.x[p] - x0_[p]));
+    }
+    reduce(travel2, maxOp<scalar>());
+    if (travel2 > sqr(0.5*margin_) && !warned_)
+    {
+        WarningInFunction
+            << "A parcel travelled " << sqrt(travel2) << " m since the DEM "
+            << "halo was built, more than half its margin " << margin_
+            << " m (from 1.5 x the fastest speed then): contacts across "
+            << "processor boundaries may have been missed. Not repeated."
+            << endl;
+        warned_ = true;
+    }
+
+    // The ghosts go, their owners send them again at their new positions.
+    // The engine's working history is written back first (so the
+    // histories sent are current) and its lists rebuilt at the next
+    // evaluation (the rows have changed)
+    if (engine_)
+    {
+        engine_->editHistory();
+    }
+    s.resize(nOwned);
+    ++nRebuilds_;
+    send(s);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::processorHalo::build
+(
+    demState& s,
+    const scalar range,
+    const scalar margin,
+    demEngine* engine
+)
+{
+    range_ = range;
+    margin_ = margin;
+    engine_ = engine;
+    send(s);
+}
+
+
 void Foam::processorHalo::update(demState& s)
 {
+    if (stepsLeft_-- == 0)
+    {
+        rebuild(s);
+        return;
+    }
+
     // Every sub-step: the sizes are known on both sides since the build, so
     // the values go as raw doubles, receives posted first, without the
     // size exchange and stream encoding of PstreamBuffers (a collective

@@ -961,11 +961,26 @@ void Foam::DPICloud<CloudType>::writeDiagnostics()
         << ", contacts (pair, wall) = (" << nPair << ", " << nWall << ")"
         << ", max overlap/R* = " << maxOverlap
         << ", kinetic energy = " << ke << ", rotational = " << re << nl;
+
+    // Collective builds: the same counts on every processor
+    const processorHalo* halo =
+        partition_.valid() ? &partition_->halo() : halo_.get();
+    if (halo)
+    {
+        Info<< "    DEM halo: " << halo->nGhosts() << " ghost rows on the "
+            << "master, " << halo->nBuilds() << " builds so far, "
+            << halo->nRebuilds() << " of them within a fluid step" << nl;
+    }
 }
 
 
 template<class CloudType>
-Foam::scalar Foam::DPICloud<CloudType>::haloReach(const scalar Dt) const
+void Foam::DPICloud<CloudType>::haloReach
+(
+    const scalar Dt,
+    scalar& range,
+    scalar& margin
+) const
 {
     scalar rMax = 0;
     scalar vMax = 0;
@@ -977,9 +992,18 @@ Foam::scalar Foam::DPICloud<CloudType>::haloReach(const scalar Dt) const
     reduce(rMax, maxOp<scalar>());
     reduce(vMax, maxOp<scalar>());
 
-    // Both parcels of a pair may travel towards each other during the
-    // fluid step; 1.5 x the current speed covers moderate acceleration
-    return engine_->interactionReach(rMax) + 2*1.5*vMax*Dt;
+    range = engine_->interactionReach(rMax);
+
+    // Enough for the fluid step while the parcels are slow (both parcels
+    // of a pair travelling towards each other, 1.5 x the fastest speed for
+    // moderate acceleration), so the halo is built once per fluid step; at
+    // most one Verlet skin, past which the halo is built again within the
+    // fluid step (processorHalo) rather than take in the fastest parcel's
+    // travel over the whole of it. One skin: the halo is then built about
+    // as often as that parcel's own travel rebuilds the neighbour lists
+    // (half a skin); of 0.5, 1 and 2 skins it was the fastest on the
+    // full-size inhaler's spray (tutorials/inhaler/README.md)
+    margin = min(2*1.5*vMax*Dt, engine_->neighbours().skin());
 }
 
 
@@ -1356,7 +1380,9 @@ void Foam::DPICloud<CloudType>::motion
         // The DEM on its own partition: the rows (with their fluid forces,
         // or with the frozen fluid states when the forces follow every
         // sub-step) go to their DEM owners and back
-        partition_->setInputs(rowKeys_, rowXi_, haloReach(Dt), checkWhen);
+        scalar range, margin;
+        haloReach(Dt, range, margin);
+        partition_->setInputs(rowKeys_, rowXi_, range, margin, checkWhen);
         if (coupling_->subStepForces())
         {
             coupling_->sample(*this, state_);
@@ -1422,7 +1448,9 @@ void Foam::DPICloud<CloudType>::motion
             // build: a parcel new to this processor's halo brings the
             // contacts it already has (walls included), so they continue
             // here as they do at its owner
-            halo_->build(state_, haloReach(Dt), &engine_());
+            scalar range, margin;
+            haloReach(Dt, range, margin);
+            halo_->build(state_, range, margin, &engine_());
             engine_->orderRows(state_, state_.owned());
         }
         if (checkWhen.size())
