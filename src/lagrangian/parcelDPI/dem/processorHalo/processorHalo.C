@@ -50,7 +50,8 @@ void Foam::processorHalo::send(demState& s)
 
     // The box of each processor's owned parcels and home (none: an
     // inverted box, which contains nothing however far it is grown)
-    List<boundBox> boxes(Pstream::nProcs(), homeBox_);
+    List<boundBox> boxes(Pstream::nProcs());
+    boxes[Pstream::myProcNo()] = homeBox_;
     boxes[Pstream::myProcNo()].add(x0_);
     Pstream::gatherList(boxes);
     Pstream::scatterList(boxes);
