@@ -335,7 +335,9 @@ void Foam::contactHistory::toNear
 {
     const label m = nearK.size();
     List<vector> xi(m, Zero);
-    List<bool> has(m, false);
+    // (max: GCC cannot tell that a size is not negative and warns of a
+    // huge allocation, -Walloc-size-larger-than)
+    List<bool> has(max(m, label(0)), false);
 
     if (nearFromStore_)
     {

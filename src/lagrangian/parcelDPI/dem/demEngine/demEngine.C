@@ -66,19 +66,10 @@ inline double wallClock()
 Foam::scalar Foam::demEngine::readSkin(const dictionary& dict) const
 {
     // Default: the smallest particle diameter
-    scalar dMin = GREAT;
-    for (label i = 0; i < materials_.size(); ++i)
-    {
-        if (materials_.isParticleType(i))
-        {
-            dMin = min(dMin, materials_.diameter(i));
-        }
-    }
-
     const dictionary nsDict(dict.subOrEmptyDict("neighbourSearch"));
     dictKeys::warnUnknown(nsDict, {"skin", "order"});
     const scalar skin =
-        nsDict.getOrDefault<scalar>("skin", dMin < GREAT ? dMin : 0);
+        nsDict.getOrDefault<scalar>("skin", materials_.minDiameter());
     if (!(skin > 0))
     {
         FatalIOErrorInFunction(dict)

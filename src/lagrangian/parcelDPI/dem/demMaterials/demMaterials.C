@@ -352,4 +352,18 @@ Foam::scalar Foam::demMaterials::maxDiameter() const
 }
 
 
+Foam::scalar Foam::demMaterials::minDiameter() const
+{
+    scalar d = GREAT;
+    forAll(diameter_, i)
+    {
+        if (isParticleType(i))
+        {
+            d = min(d, diameter_[i]);
+        }
+    }
+    return d < GREAT ? d : 0;
+}
+
+
 // ************************************************************************* //
