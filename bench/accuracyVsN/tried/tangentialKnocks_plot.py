@@ -15,18 +15,22 @@ import matplotlib.pyplot as plt
 # N: (mean, std); Case 6 20 seeds (40 at N = 1 and 10), reference 10 (40 at 10)
 case6 = {
     "today's scaling": {1: (0.632, 0.061), 2: (0.658, 0.055), 5: (0.620, 0.111),
-                        10: (0.510, 0.168), 20: (0.480, 0.235)},
+                        10: (0.510, 0.168), 20: (0.480, 0.235),
+                        50: (0.400, 0.394), 100: (0.400, 0.516)},
     "knocks along the surface (w = 1)": {1: (0.632, 0.061), 2: (0.689, 0.072),
                                          5: (0.673, 0.112), 10: (0.630, 0.202),
-                                         20: (0.580, 0.158)},
+                                         20: (0.580, 0.158), 50: (0.500, 0.397),
+                                         100: (0.450, 0.510)},
 }
 # the powder, 4 seeds each
 powder = {
     "today's scaling": {1: (0.302, 0.008), 2: (0.323, 0.022), 5: (0.340, 0.024),
-                        10: (0.367, 0.006), 20: (0.386, 0.027)},
+                        10: (0.367, 0.006), 20: (0.386, 0.027),
+                        50: (0.426, 0.034), 100: (0.458, 0.068)},
     "knocks along the surface (w = 1)": {1: (0.302, 0.008), 2: (0.291, 0.017),
                                          5: (0.303, 0.022), 10: (0.309, 0.008),
-                                         20: (0.316, 0.013)},
+                                         20: (0.316, 0.013), 50: (0.330, 0.031),
+                                         100: (0.323, 0.044)},
 }
 
 fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
@@ -41,8 +45,8 @@ for ax, data, title, ylabel in [
                     yerr=[runs[n][1] for n in Ns], fmt=style, capsize=3,
                     label=name)
     ax.set_xscale("log")
-    ax.set_xticks([1, 2, 5, 10, 20])
-    ax.set_xticklabels(["1", "2", "5", "10", "20"])
+    ax.set_xticks([1, 2, 5, 10, 20, 50, 100])
+    ax.set_xticklabels(["1", "2", "5", "10", "20", "50", "100"])
     ax.set_xlabel("coarsening factor N (100 API primaries per carrier)")
     ax.set_ylabel(ylabel)
     ax.set_title(title)
