@@ -24,7 +24,7 @@ def check(ok, msg):
 rhop, d, D = 1520.0, 5e-6, 70e-6
 rhof, nuf = 1.2, 1.511e-5
 g = np.array([0, 0, -9.81])
-dt, K = 1e-8, 10
+dt = 1e-8                               # DEM time step; refreshInterval K = 10
 E, nu, e = 5e8, 0.35, 0.85
 ma = rhop*np.pi/6*d**3
 mc = rhop*np.pi/6*D**3
@@ -46,21 +46,25 @@ def accel(v):
     return g - v/tau*(1 + 0.15*Re**0.687)
 
 
+def rk4Step(f, y, h):
+    """One classical Runge-Kutta step of y' = f(y)."""
+    k1 = f(y)
+    k2 = f(y + h/2*k1)
+    k3 = f(y + h/2*k2)
+    k4 = f(y + h*k3)
+    return y + h/6*(k1 + 2*k2 + 2*k3 + k4)
+
+
 def rk4(x0, v0, n, h):
     """The model's equation of motion, RK4 at step h/4, sampled every h."""
     y = np.r_[x0, v0].astype(float)
     out = np.empty((n, 6))
-    s = h/4
 
     def f(y):
         return np.r_[y[3:], accel(y[3:])]
     for k in range(n):
         for _ in range(4):
-            k1 = f(y)
-            k2 = f(y + s/2*k1)
-            k3 = f(y + s/2*k2)
-            k4 = f(y + s*k3)
-            y = y + s/6*(k1 + 2*k2 + 2*k3 + k4)
+            y = rk4Step(f, y, h/4)
         out[k] = y
     return out
 
@@ -83,11 +87,7 @@ def hertzImpact(ms, Rs, v0):
     y = np.array([0.0, v0])
     dmax = 0
     while True:
-        k1 = a(y)
-        k2 = a(y + h/2*k1)
-        k3 = a(y + h/2*k2)
-        k4 = a(y + h*k3)
-        y = y + h/6*(k1 + 2*k2 + 2*k3 + k4)
+        y = rk4Step(a, y, h)
         dmax = max(dmax, y[0])
         if y[0] < 0:
             return dmax, -y[1]/v0
@@ -137,7 +137,6 @@ check(es < bound,
 # 0.01 (the approach and rebound speeds are read at the sub-steps before and
 # after the contact, which begins and ends inside a sub-step: about a
 # fifteenth of a sub-step's impulse either side).
-C = A[0]
 
 
 def impact(name, gap, vn, ms, Rs, traj):
@@ -165,25 +164,30 @@ def impact(name, gap, vn, ms, Rs, traj):
     return k0
 
 
-contact = {}
-starts = {2: (1, 0, 0), 3: (-1, 0, 0), 4: (0, 1, 0), 5: (0, -1, 0),
-          6: (0, 0, 1), 7: (0, 0, -1)}
-for i in starts:
-    r = A[i][:, 1:4] - C[:, 1:4]
-    dist = np.linalg.norm(r, axis=1)
-    vn = np.sum((A[i][:, 4:7] - C[:, 4:7])*r, axis=1)/dist
-    contact[i] = impact("API %d -> carrier" % i, dist - cutoff, vn,
-                        ma*mc/(ma + mc), D*d/(2*(D + d)), A[i])
-contact[9] = impact("API 9 -> floor", A[9][:, 3] - d/2, A[9][:, 6],
-                    ma, d/2, A[9])
-contact[10] = impact("API 10 -> wall", 4e-3 - A[10][:, 1] - d/2, -A[10][:, 4],
-                     ma, d/2, A[10])
+def impacts(T, run):
+    """Each impactor's contact of run T (section 2's checks): API 2-7 on the
+    carrier, 9 on the floor, 10 on the wall x = 4 mm; its first sub-step."""
+    k = {}
+    for i in range(2, 8):
+        r = T[i][:, 1:4] - T[0][:, 1:4]
+        dist = np.linalg.norm(r, axis=1)
+        vn = np.sum((T[i][:, 4:7] - T[0][:, 4:7])*r, axis=1)/dist
+        k[i] = impact("%sAPI %d -> carrier" % (run, i), dist - cutoff, vn,
+                      ma*mc/(ma + mc), D*d/(2*(D + d)), T[i])
+    k[9] = impact("%sAPI 9 -> floor" % run, T[9][:, 3] - d/2, T[9][:, 6],
+                  ma, d/2, T[9])
+    k[10] = impact("%sAPI 10 -> wall" % run, 4e-3 - T[10][:, 1] - d/2,
+                   -T[10][:, 4], ma, d/2, T[10])
+    return k
+
+
+contact = impacts(A, "")
 
 # 3. The passing parcel (8): aimed 2 um wide of contact (1.999 um: its
 # offsets rounded to the 6 digits foamDictionary writes back). It must come no
 # closer than the aim less what gravity and the carrier's recoils move
 # (< 0.1 um here) and never touch.
-gap8 = np.linalg.norm(A[8][:, 1:4] - C[:, 1:4], axis=1) - cutoff
+gap8 = np.linalg.norm(A[8][:, 1:4] - A[0][:, 1:4], axis=1) - cutoff
 check(1.9e-6 < gap8.min() < 2.1e-6,
       "API 8 passes the carrier untouched: closest gap %.3f um (aimed 2 um)"
       % (1e6*gap8.min()))
@@ -198,21 +202,8 @@ check(1.9e-6 < gap8.min() < 2.1e-6,
 # position are a per cent of its 5 nm overlap, and the contact may end a
 # sub-step apart (checked through the restitution above, not row by row).
 R = traces("R")
-sameStart = True
-for i, k in contact.items():
-    if i in starts:
-        r = R[i][:, 1:4] - R[0][:, 1:4]
-        dist = np.linalg.norm(r, axis=1)
-        vn = np.sum((R[i][:, 4:7] - R[0][:, 4:7])*r, axis=1)/dist
-        kR = impact("R: API %d -> carrier" % i, dist - cutoff, vn,
-                    ma*mc/(ma + mc), D*d/(2*(D + d)), R[i])
-    elif i == 9:
-        kR = impact("R: API 9 -> floor", R[9][:, 3] - d/2, R[9][:, 6],
-                    ma, d/2, R[9])
-    else:
-        kR = impact("R: API 10 -> wall", 4e-3 - R[10][:, 1] - d/2,
-                    -R[10][:, 4], ma, d/2, R[10])
-    sameStart &= k is not None and kR == k
+contactR = impacts(R, "R: ")
+sameStart = all(k is not None and contactR[i] == k for i, k in contact.items())
 worst = 0.0
 for i in range(1, 11):
     k = contact.get(i) or n
