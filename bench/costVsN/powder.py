@@ -13,6 +13,12 @@ cohesion), gravity -z, DEM step 1e-8 s.
 
     powder.py DIR --N 10 [--carriers 100] [--primaries 100] [--steps 3000]
               [--fluid-every 1000] [--phi 0.15] [--vrms 0.5] [--seed 20240]
+              [--coarse-graining scaledContacts|coatingCoverage]
+
+With --coarse-graining coatingCoverage (written to dem/coarseGraining) the
+API parcels meet each other at sqrt(N) x their primary radius, so they are
+placed that far apart, on their own carrier and from the parcels of the
+carriers placed before (the engine refuses a start with them overlapping).
 """
 import argparse
 import math
@@ -30,11 +36,13 @@ RHO, Y, NU = 1520.0, 5e8, 0.35
 DELTA_EQ = 7.632e-10          # carrier-API equilibrium overlap, A = 1e-19 J
 
 
-def coat(rng, nParcels):
-    """nParcels unit vectors whose API (at distance rc + ra) do not overlap."""
+def coat(rng, nParcels, xc, placed, grow=1.0):
+    """nParcels positions on the carrier at xc whose API (at distance
+    rc + ra from it) are at least grow x DA apart from each other and from
+    the API in placed (an array of positions, grow > 1 only)."""
     rc, ra = DC/2, DA/2
     dist = rc + ra - DELTA_EQ
-    dmin = DA*(1 + 1e-3)
+    dmin = grow*DA*(1 + 1e-3)
     out = []
     tries = 0
     while len(out) < nParcels:
@@ -44,9 +52,13 @@ def coat(rng, nParcels):
         u = rng.normal(size=3)
         u /= np.linalg.norm(u)
         p = dist*u
-        if all(np.linalg.norm(p - q) >= dmin for q in out):
-            out.append(p)
-    return out
+        if not all(np.linalg.norm(p - q) >= dmin for q in out):
+            continue
+        if grow > 1 and len(placed) and \
+                np.min(np.linalg.norm(placed - (xc + p), axis=1)) < dmin:
+            continue
+        out.append(p)
+    return [xc + p for p in out]
 
 
 def main():
@@ -64,6 +76,8 @@ def main():
                     "bounding spheres (80 um)")
     ap.add_argument("--vrms", type=float, default=0.5)
     ap.add_argument("--seed", type=int, default=20240)
+    ap.add_argument("--coarse-graining", default="scaledContacts",
+                    choices=["scaledContacts", "coatingCoverage"])
     a = ap.parse_args()
     if a.steps % a.fluid_every:
         sys.exit("powder.py: --steps must be a multiple of --fluid-every")
@@ -76,9 +90,14 @@ def main():
     parts = []
     for xc, vc in zip(x, v):
         parts.append(("carrier", xc, vc))
+    grow = math.sqrt(a.N) if a.coarse_graining == "coatingCoverage" else 1.0
+    placed = np.zeros((0, 3))
     for xc, vc in zip(x, v):
-        for dp in coat(rng, nPer):
-            parts.append(("API", xc + dp, vc))
+        api = coat(rng, nPer, np.asarray(xc), placed, grow)
+        for p in api:
+            parts.append(("API", p, vc))
+        if grow > 1:
+            placed = np.vstack([placed] + [p[None, :] for p in api])
 
     writeCase(a.case, parts, L, a.steps, a.fluid_every, 1e-8,
               "%d carriers, %d API parcels of N %d (%d primaries per "
@@ -86,12 +105,13 @@ def main():
               % (a.carriers, len(parts) - a.carriers, a.N, nPer*a.N, a.seed),
               "costVsN powder (bench/costVsN/powder.py): %d carriers coated "
               "with\n// %d API primaries each as %d parcels of N = %d"
-              % (a.carriers, nPer*a.N, nPer, a.N), a.N)
+              % (a.carriers, nPer*a.N, nPer, a.N), a.N, a.coarse_graining)
     print("powder.py: %d carriers in a box of %.3g mm, %d API parcels of N %d"
           % (a.carriers, L*1e3, len(parts) - a.carriers, a.N))
 
 
-def writeCase(case, parts, L, steps, every, dt, note, title, N):
+def writeCase(case, parts, L, steps, every, dt, note, title, N,
+              coarseGraining="scaledContacts"):
     """The dpiFoam DEM-only case of a carrier-API powder: parts (type,
     position, velocity) in the box [0, L] (one edge or three) of six plane
     walls (no wall cohesion), cohesion vdwGuParcel as Case 6, API parcels
@@ -159,6 +179,7 @@ def writeCase(case, parts, L, steps, every, dt, note, title, N):
     tangentialModel historyParcel;
     rollingModel none;
     cohesionModel vdwGuParcel;
+    coarseGraining %(cg)s;
     vdwGuParcelCoeffs
     {
         chi 3.177672;
@@ -177,7 +198,7 @@ def writeCase(case, parts, L, steps, every, dt, note, title, N):
 }
 injectors { powder { type singleParticles; #include "powderParticles" } }
 agglomerates { linkGap 0; }
-""" % dict(title=title, dt=dt, N=N, preamble=ss.dpiCloudPreamble(RHO),
+""" % dict(title=title, dt=dt, N=N, cg=coarseGraining, preamble=ss.dpiCloudPreamble(RHO),
            rho=RHO, dc=DC, da=DA, Y=Y, nu=NU, walls=walls))
 
 

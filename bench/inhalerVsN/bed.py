@@ -2,6 +2,7 @@
 """The powder bed of bench/inhalerVsN: coated carriers in the tutorial's cone.
 
 Usage: bed.py CASE --N N [--carriers 8] [--scale 0.25] [--seed 86]
+              [--coarse-graining scaledContacts|coatingCoverage]
 Writes CASE/constant/bedParticles (a singleParticles list) and prints
 "carriers apiParcels primaries".
 
@@ -14,7 +15,9 @@ ordered mixture, as after blending): round(128 C/N) parcels of N primaries
 (at least one) spread over the C carriers as evenly as the count allows,
 each at a random spot of its carrier's surface, touching it at the
 carrier-API adhesive equilibrium overlap, without API-API overlaps
-(bench/costVsN/powder.py's coat). The tutorial instead packs loose API
+(bench/costVsN/powder.py's coat; with --coarse-graining coatingCoverage
+sqrt(N) x their diameter apart, on a carrier and across carriers, as the
+model's parcels touch). The tutorial instead packs loose API
 between the carriers and lets them attach while settling (88 % attached
 after its 10 ms): in a bed of a few carriers, which must be looser to fit
 the narrow cone, most loose API would fall past the carriers and never
@@ -78,6 +81,8 @@ def main():
     ap.add_argument("--carriers", type=int, default=8)
     ap.add_argument("--scale", type=float, default=0.25)
     ap.add_argument("--seed", type=int, default=86)
+    ap.add_argument("--coarse-graining", default="scaledContacts",
+                    choices=["scaledContacts", "coatingCoverage"])
     a = ap.parse_args()
     if a.carriers < 1 or a.N < 1:
         sys.exit("bed.py: --carriers and --N must be positive, got %d, %d"
@@ -94,10 +99,15 @@ def main():
     for c in centres:
         lines.append("{ type carrier; position (%.12e %.12e %.12e); }"
                      % tuple(c))
+    grow = np.sqrt(a.N) if a.coarse_graining == "coatingCoverage" else 1.0
+    placed = np.zeros((0, 3))
     for c, k in zip(centres, per):
-        for dp in powder.coat(rng, int(k)):
+        api = powder.coat(rng, int(k), c, placed, grow)
+        for p in api:
             lines.append("{ type API; position (%.12e %.12e %.12e); }"
-                         % tuple(c + dp))
+                         % tuple(p))
+        if grow > 1:
+            placed = np.vstack([placed] + [p[None, :] for p in api])
     with open(os.path.join(a.case, "constant", "bedParticles"), "w") as f:
         f.write("// bench/inhalerVsN/bed.py: %d carriers coated with %d API "
                 "parcels of N = %d (%d primaries), cone scale %g, seed %d\n"

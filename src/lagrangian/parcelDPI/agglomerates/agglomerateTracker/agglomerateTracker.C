@@ -54,6 +54,7 @@ namespace
 void Foam::agglomerateTracker::linkedPairs
 (
     const demState& s,
+    const demMaterials& materials,
     DynamicList<labelPair>& pairs
 ) const
 {
@@ -64,7 +65,11 @@ void Foam::agglomerateTracker::linkedPairs
         return;
     }
 
-    const scalar rMax = s.maxRadius();
+    // The contact radii: API parcels that meet each other at grown radii
+    // (coarseGrainingModel) are linked where their grown radii touch, as
+    // in the engine
+    const coarseGrainingModel& cg = materials.coarseGraining();
+    const scalar rMax = cg.maxRadius(s.r, s.typeId);
     boundBox bb(s.x, false);
 
     // Any linked pair has centres closer than 2 rMax + linkGap: with cells
@@ -120,7 +125,8 @@ void Foam::agglomerateTracker::linkedPairs
                     continue;
                 }
                 const scalar gap =
-                    mag(s.x[a] - s.x[b]) - s.r[a] - s.r[b];
+                    mag(s.x[a] - s.x[b])
+                  - cg.radiusSum(s.r[a], s.typeId[a], s.r[b], s.typeId[b]);
                 if (gap < linkGap_)
                 {
                     pairs.append(labelPair(a, b));
@@ -175,7 +181,7 @@ void Foam::agglomerateTracker::update
     const label nOwned = s.owned();
 
     DynamicList<labelPair> pairs;
-    linkedPairs(s, pairs);
+    linkedPairs(s, materials, pairs);
 
     labelList parent(identity(n));
     for (const labelPair& pr : pairs)

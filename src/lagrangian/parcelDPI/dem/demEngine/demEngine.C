@@ -34,6 +34,7 @@ const Foam::wordList Foam::demEngine::keys
     "tangentialModel",
     "rollingModel",
     "cohesionModel",
+    "coarseGraining",
     "walls",
     "neighbourSearch",
     "timeStepCheck",
@@ -99,7 +100,10 @@ void Foam::demEngine::rebuild(const demState& s)
 
     const scalar rMax = s.maxRadius();
 
-    pairs_.build(s, models_, models_.maxRange(rMax));
+    pairs_.build
+    (
+        s, models_, models_.maxRange(rMax), materials_.coarseGraining()
+    );
     walls_.markNearWalls
     (
         s, models_, rMax, models_.maxRange(rMax), pairs_.search().skin(),
@@ -202,6 +206,17 @@ Foam::label Foam::demEngine::warnUnknownKeys(const dictionary& dict)
     wordList known(keys);
     const label nWarnings = contactModels::warnUnusedCoeffs(dict, known);
 
+    // The coarse-graining models' coefficients: the selector says when
+    // they belong to a model not selected
+    for
+    (
+        const word& model
+      : coarseGrainingModel::dictionaryConstructorTablePtr_->sortedToc()
+    )
+    {
+        known.append(model + "Coeffs");
+    }
+
     return nWarnings + dictKeys::warnUnknown(dict, known);
 }
 
@@ -251,6 +266,9 @@ Foam::demEngine::demEngine(const dictionary& dict, const polyMesh* mesh)
         << materials_.names() << ", " << walls_.size() << " walls, skin "
         << pairs_.search().skin() << " m, pairs swept in "
         << (alongCurve_ ? "morton" : "globalId") << " order" << endl;
+    Info<< "    ";
+    materials_.coarseGraining().describe(Info, materials_.names());
+    Info<< endl;
 
     timeStepCheck_.check
     (

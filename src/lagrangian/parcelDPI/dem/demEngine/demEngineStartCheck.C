@@ -89,9 +89,11 @@ void Foam::demEngine::checkStartState(const demState& s, const word& when)
         }
     }
 
-    const scalar rMax = s.maxRadius();
+    const coarseGrainingModel& cg = materials_.coarseGraining();
+    const scalar rMax = cg.maxRadius(s.r, s.typeId);
 
-    // Pairs: a grid of cells 2 rMax wide, so an overlapping pair lies in
+    // Pairs: a grid of cells 2 rMax wide (the contact radii: parcels that
+    // meet each other at grown radii), so an overlapping pair lies in
     // neighbouring cells
     startOverlap warnPair, worst;
     const scalar h = 2*max(rMax, VSMALL);
@@ -131,13 +133,14 @@ void Foam::demEngine::checkStartState(const demState& s, const word& when)
                 {
                     continue;
                 }
-                const scalar rSum = s.r[i] + s.r[j];
+                const scalar rSum =
+                    cg.radiusSum(s.r[i], s.typeId[i], s.r[j], s.typeId[j]);
                 const scalar dist = mag(s.x[i] - s.x[j]);
                 if (dist >= rSum)
                 {
                     continue;
                 }
-                const scalar Rstar = s.r[i]*s.r[j]/rSum;
+                const scalar Rstar = s.r[i]*s.r[j]/(s.r[i] + s.r[j]);
                 const scalar ratio = (rSum - dist)/Rstar;
                 if (ratio > overlap_.startWarn())
                 {
@@ -237,6 +240,14 @@ void Foam::demEngine::checkStartState(const demState& s, const word& when)
             << " is meant to relax, raise dem/startOverlap/refuse above "
             << threeDigits(worst.ratio).c_str() << " (default 0.1; warn "
             << overlap_.startWarn() << ")"
+            << (
+                   cg.grows()
+                 ? ". With coarseGraining " + cg.type() + ", API parcels"
+                   " touch each other at their grown radii (sqrt(N) x the"
+                   " primary's): place them that far apart, as"
+                   " regionPacking does"
+                 : std::string()
+               ).c_str()
             << exit(FatalError);
     }
 

@@ -286,6 +286,8 @@ Foam::demMaterials::demMaterials
     checkCoarsening(typesDict);
 
     readPairs(dict.subDict("pairs"), warnUnknownKeys);
+
+    coarseGraining_ = coarseGrainingModel::New(dict, N_, api_, warnUnknownKeys);
 }
 
 

@@ -135,6 +135,17 @@ void Foam::neighbourSearch::build
     const std::function<scalar(scalar, scalar)>& range
 )
 {
+    build(s, s.r, range);
+}
+
+
+void Foam::neighbourSearch::build
+(
+    const demState& s,
+    const UList<scalar>& radii,
+    const std::function<scalar(scalar, scalar)>& range
+)
+{
     const label n = s.size();
 
     x0_ = s.x;
@@ -151,7 +162,7 @@ void Foam::neighbourSearch::build
     }
 
     // Size levels: a level spans radii up to twice its smallest radius
-    SortableList<scalar> sortedR(s.r);
+    SortableList<scalar> sortedR(radii);
     labelList levelOf(n);
     std::vector<level> levels;
     {
@@ -255,7 +266,7 @@ void Foam::neighbourSearch::build
         {
             const label p = entry.second;
             const point& xp = s.x[p];
-            const scalar rp = s.r[p];
+            const scalar rp = radii[p];
 
             for (label L = lp; L < nLevels_; ++L)
             {
@@ -303,7 +314,7 @@ void Foam::neighbourSearch::build
                         }
 
                         const scalar cut =
-                            rp + s.r[q] + range(rp, s.r[q]) + skin_;
+                            rp + radii[q] + range(rp, radii[q]) + skin_;
                         if (magSqr(xp - s.x[q]) < sqr(cut))
                         {
                             if (s.key[p] < s.key[q])

@@ -16,6 +16,8 @@ Foam::pairContacts::pairContacts(const scalar skin)
     search_(skin),
     models_(nullptr),
     range_(0),
+    cg_(nullptr),
+    knocks_(false),
     nearSkin_(0),
     nearCurrent_(false),
     nNearBuilds_(0),
@@ -31,7 +33,8 @@ void Foam::pairContacts::build
 (
     const demState& s,
     const contactModels& models,
-    const scalar range
+    const scalar range,
+    const coarseGrainingModel& cg
 )
 {
     const label n = s.size();
@@ -39,14 +42,29 @@ void Foam::pairContacts::build
     // A near list of the old half list means nothing for the new one
     nearCurrent_ = false;
 
-    search_.build
-    (
-        s,
-        [&models](const scalar ri, const scalar rj)
+    cg_ = &cg;
+    knocks_ = cg.grows() && cg.knockShare() > 0;
+
+    const auto pairRange = [&models](const scalar ri, const scalar rj)
+    {
+        return models.maxPairRange(ri, rj);
+    };
+    if (cg.grows())
+    {
+        // Parcels that meet each other at grown radii are searched at
+        // those (their pairs with other rows are then listed a little
+        // farther than needed, and trimmed at the near build)
+        scalarList reach(s.r);
+        forAll(reach, p)
         {
-            return models.maxPairRange(ri, rj);
+            reach[p] *= cg.factor(s.typeId[p]);
         }
-    );
+        search_.build(s, reach, pairRange);
+    }
+    else
+    {
+        search_.build(s, pairRange);
+    }
 
     // The half list in key order (demState::key). Unless copyPairs_, the pairs of two
     // halo copies (rows from s.owned() on) are left out: only owned rows
@@ -54,7 +72,7 @@ void Foam::pairContacts::build
     // the copies would be thrown away (50,000 carriers on 2 processes: 1
     // in 11 of a processor's near pairs)
     const DynamicList<labelPair>& pairs = search_.pairs();
-    const label firstCopy = copyPairs_ ? n : s.owned();
+    const label firstCopy = (copyPairs_ || knocks_) ? n : s.owned();
     const auto listed = [firstCopy](const labelPair& pr)
     {
         return pr.first() < firstCopy || pr.second() < firstCopy;
@@ -284,11 +302,14 @@ void Foam::pairContacts::buildNear
     nearCut2_.clear();
     nearRstar_.clear();
     nearMstar_.clear();
+    nearRSum_.clear();
     nearK_.setSize(m);
     nearJ_.setSize(m);
     nearCut2_.setSize(m);
     nearRstar_.setSize(m);
     nearMstar_.setSize(m);
+    nearRSum_.setSize(m);
+    DynamicList<labelPair> seatPairs;
 
     m = 0;
     forAll(pairRow_, a)
@@ -305,11 +326,26 @@ void Foam::pairContacts::buildNear
                 nearCut2_[m] = cut2(s, i, j);
                 nearRstar_[m] = s.r[i]*s.r[j]/(s.r[i] + s.r[j]);
                 nearMstar_[m] = s.m[i]*s.m[j]/(s.m[i] + s.m[j]);
+                nearRSum_[m] = radiusSum(s, i, j);
+                if (knocks_)
+                {
+                    const label ti = s.typeId[i];
+                    const label tj = s.typeId[j];
+                    if (cg_->factor(ti) > 1 && cg_->seat(tj))
+                    {
+                        seatPairs.append(labelPair(i, j));
+                    }
+                    else if (cg_->factor(tj) > 1 && cg_->seat(ti))
+                    {
+                        seatPairs.append(labelPair(j, i));
+                    }
+                }
                 ++m;
             }
         }
     }
     nearStart_[pairRow_.size()] = m;
+    nearSeat_.transfer(seatPairs);
 
     h.toNear(pairRow_, nearStart_, nearJ_, nearK_, oldNearK);
     nearCurrent_ = true;
@@ -317,6 +353,56 @@ void Foam::pairContacts::buildNear
     ++nNearBuilds_;
     sumListed_ += pairJ_.size();
     sumNear_ += nearK_.size();
+}
+
+
+void Foam::pairContacts::findSeats(const demState& s) const
+{
+    nSeats_.setSize(s.size());
+    nSeats_ = 0;
+    seats_.setSize(maxSeats*s.size());
+
+    // In near order: each parcel's seats in the key order of its pairs,
+    // the same on every processor that sees the parcel's near pairs
+    for (const labelPair& ps : nearSeat_)
+    {
+        const label p = ps.first();
+        const label seat = ps.second();
+        if (magSqr(s.x[p] - s.x[seat]) < sqr(s.r[p] + s.r[seat]))
+        {
+            if (nSeats_[p] < maxSeats)
+            {
+                seats_[maxSeats*p + nSeats_[p]++] = seat;
+            }
+        }
+    }
+}
+
+
+Foam::label Foam::pairContacts::commonSeat
+(
+    const demState& s,
+    const label i,
+    const label j
+) const
+{
+    label best = -1;
+    for (label a = 0; a < nSeats_[i]; ++a)
+    {
+        const label c = seats_[maxSeats*i + a];
+        for (label b = 0; b < nSeats_[j]; ++b)
+        {
+            if
+            (
+                seats_[maxSeats*j + b] == c
+             && (best < 0 || s.globalId[c] < s.globalId[best])
+            )
+            {
+                best = c;
+            }
+        }
+    }
+    return best;
 }
 
 

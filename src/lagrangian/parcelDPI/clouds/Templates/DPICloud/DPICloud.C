@@ -982,11 +982,16 @@ void Foam::DPICloud<CloudType>::haloReach
     scalar& margin
 ) const
 {
-    scalar rMax = 0;
+    // The contact radii: parcels that meet each other at grown radii
+    // (coarseGrainingModel) reach that far
+    scalar rMax =
+        engine_->materials().coarseGraining().maxRadius
+        (
+            state_.r, state_.typeId
+        );
     scalar vMax = 0;
     for (label row = 0; row < state_.size(); ++row)
     {
-        rMax = max(rMax, state_.r[row]);
         vMax = max(vMax, mag(state_.v[row]));
     }
     reduce(rMax, maxOp<scalar>());

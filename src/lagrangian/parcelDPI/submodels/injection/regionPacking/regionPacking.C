@@ -51,6 +51,7 @@ class sphereGrid
     std::unordered_map<std::int64_t, std::vector<Foam::label>> cells_;
     std::vector<Foam::point> x_;
     std::vector<Foam::scalar> r_;
+    std::vector<Foam::scalar> grown_;
 
     std::int64_t key(const std::int64_t i, const std::int64_t j,
                      const std::int64_t k) const
@@ -73,9 +74,16 @@ public:
         h_(h)
     {}
 
-    //- Insert a sphere of radius <= h/2
-    void insert(const Foam::point& x, const Foam::scalar r)
+    //- Insert a sphere of radius <= h/2 and its grown radius <= h/2 among
+    //  growing parcels (0: it does not grow)
+    void insert
+    (
+        const Foam::point& x,
+        const Foam::scalar r,
+        const Foam::scalar grown
+    )
     {
+        grown_.push_back(grown);
         const Foam::vector d(x - origin_);
         cells_[key(index(d.x()), index(d.y()), index(d.z()))]
             .push_back(Foam::label(x_.size()));
@@ -83,8 +91,14 @@ public:
         r_.push_back(r);
     }
 
-    //- Whether a sphere of radius <= h/2 at x overlaps one in the grid
-    bool overlaps(const Foam::point& x, const Foam::scalar r) const
+    //- Whether a sphere of radius <= h/2 (grown radius among growing
+    //  parcels <= h/2, 0 if it does not grow) at x overlaps one in the grid
+    bool overlaps
+    (
+        const Foam::point& x,
+        const Foam::scalar r,
+        const Foam::scalar grown
+    ) const
     {
         const Foam::vector d(x - origin_);
         const std::int64_t i0 = index(d.x()), j0 = index(d.y()),
@@ -105,7 +119,12 @@ public:
                         if
                         (
                             Foam::magSqr(x - x_[q])
-                          < Foam::sqr(r + r_[q])
+                          < Foam::sqr
+                            (
+                                grown > 0 && grown_[q] > 0
+                              ? grown + grown_[q]
+                              : r + r_[q]
+                            )
                         )
                         {
                             return true;
@@ -156,6 +175,7 @@ void Foam::dpiInjectionModels::regionPacking::readFractions
         t.name = names[k];
         t.d = mat.diameter(ti);
         t.rho = mat.density(ti);
+        t.factor = mat.coarseGraining().factor(ti);
         t.fraction = fd.get<scalar>(names[k]);
         if (!(t.fraction >= 0))
         {
@@ -252,6 +272,11 @@ Foam::dpiInjectionModels::regionPacking::regionPacking
         if (materials->isParticleType(i))
         {
             typeDiameter_.insert(materials->names()[i], materials->diameter(i));
+            typeFactor_.insert
+            (
+                materials->names()[i],
+                materials->coarseGraining().factor(i)
+            );
         }
     }
 
@@ -403,12 +428,19 @@ void Foam::dpiInjectionModels::regionPacking::pack
 {
     Random rnd(seed_);
 
-    // Largest packed diameter: the grid cell
+    // Largest packed diameter: the grid cell (the grown diameter of
+    // growing parcels if larger)
     scalar dMax = 0;
     for (const packedType& t : types_)
     {
-        dMax = max(dMax, t.d);
+        dMax = max(dMax, t.factor*t.d);
     }
+    // The grown radius of a particle of radius r and contact radius
+    // factor f, 0 if it does not grow
+    const auto grownRadius = [](const scalar r, const scalar f)
+    {
+        return f > 1 ? f*r : 0;
+    };
 
     // Obstacles near the region: small ones into the grid, larger ones in
     // a list
@@ -419,7 +451,7 @@ void Foam::dpiInjectionModels::regionPacking::pack
     scalar obstacleVolume = 0;
     label nObstacles = 0;
 
-    auto addObstacle = [&](const point& c, const scalar r)
+    auto addObstacle = [&](const point& c, const scalar r, const scalar f)
     {
         for (direction cmpt = 0; cmpt < 3; ++cmpt)
         {
@@ -437,9 +469,9 @@ void Foam::dpiInjectionModels::regionPacking::pack
         {
             obstacleVolume += sphereVolume(2*r);
         }
-        if (r <= 0.5*dMax)
+        if (max(r, grownRadius(r, f)) <= 0.5*dMax)
         {
-            grid.insert(c, r);
+            grid.insert(c, r, grownRadius(r, f));
         }
         else
         {
@@ -449,7 +481,7 @@ void Foam::dpiInjectionModels::regionPacking::pack
 
     for (const sphere& s : exclude_)
     {
-        addObstacle(s.centre, s.radius);
+        addObstacle(s.centre, s.radius, 1);
     }
     if (avoidInjected_)
     {
@@ -458,7 +490,10 @@ void Foam::dpiInjectionModels::regionPacking::pack
             const scalar d = s.d > 0 ? s.d : typeDiameter_.lookup(s.type, -1);
             if (d > 0)
             {
-                addObstacle(s.position, 0.5*d);
+                addObstacle
+                (
+                    s.position, 0.5*d, typeFactor_.lookup(s.type, 1)
+                );
             }
         }
     }
@@ -501,7 +536,7 @@ void Foam::dpiInjectionModels::regionPacking::pack
                 {
                     continue;
                 }
-                if (grid.overlaps(p, r))
+                if (grid.overlaps(p, r, grownRadius(r, t.factor)))
                 {
                     continue;
                 }
@@ -519,7 +554,7 @@ void Foam::dpiInjectionModels::regionPacking::pack
                     continue;
                 }
 
-                grid.insert(p, r);
+                grid.insert(p, r, grownRadius(r, t.factor));
                 injectionSpec spec;
                 spec.position = p;
                 spec.U = U_;
