@@ -61,6 +61,21 @@ def coat(rng, nParcels, xc, placed, grow=1.0):
     return [xc + p for p in out]
 
 
+def coatAll(rng, centres, counts, N, coarseGraining):
+    """The API of every carrier (centres, counts parcels each, in order):
+    coat's positions, with coatingCoverage sqrt(N) x DA apart also from
+    the API of the carriers coated before."""
+    grow = math.sqrt(N) if coarseGraining == "coatingCoverage" else 1.0
+    placed = np.zeros((0, 3))
+    out = []
+    for c, k in zip(centres, counts):
+        api = coat(rng, int(k), np.asarray(c), placed, grow)
+        out.append(api)
+        if grow > 1:
+            placed = np.vstack([placed] + [p[None, :] for p in api])
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawTextHelpFormatter)
@@ -90,14 +105,10 @@ def main():
     parts = []
     for xc, vc in zip(x, v):
         parts.append(("carrier", xc, vc))
-    grow = math.sqrt(a.N) if a.coarse_graining == "coatingCoverage" else 1.0
-    placed = np.zeros((0, 3))
-    for xc, vc in zip(x, v):
-        api = coat(rng, nPer, np.asarray(xc), placed, grow)
+    coats = coatAll(rng, x, [nPer]*len(x), a.N, a.coarse_graining)
+    for api, vc in zip(coats, v):
         for p in api:
             parts.append(("API", p, vc))
-        if grow > 1:
-            placed = np.vstack([placed] + [p[None, :] for p in api])
 
     writeCase(a.case, parts, L, a.steps, a.fluid_every, 1e-8,
               "%d carriers, %d API parcels of N %d (%d primaries per "

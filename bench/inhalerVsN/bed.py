@@ -99,15 +99,10 @@ def main():
     for c in centres:
         lines.append("{ type carrier; position (%.12e %.12e %.12e); }"
                      % tuple(c))
-    grow = np.sqrt(a.N) if a.coarse_graining == "coatingCoverage" else 1.0
-    placed = np.zeros((0, 3))
-    for c, k in zip(centres, per):
-        api = powder.coat(rng, int(k), c, placed, grow)
+    for api in powder.coatAll(rng, centres, per, a.N, a.coarse_graining):
         for p in api:
             lines.append("{ type API; position (%.12e %.12e %.12e); }"
                          % tuple(p))
-        if grow > 1:
-            placed = np.vstack([placed] + [p[None, :] for p in api])
     with open(os.path.join(a.case, "constant", "bedParticles"), "w") as f:
         f.write("// bench/inhalerVsN/bed.py: %d carriers coated with %d API "
                 "parcels of N = %d (%d primaries), cone scale %g, seed %d\n"
