@@ -30,6 +30,10 @@ import sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "tutorials", "scripts"))
+import foamLagrangian as fl  # noqa: E402
+
 ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
 ap.add_argument("cases", nargs="+")
 ap.add_argument("--md", default="transport.md")
@@ -41,24 +45,6 @@ radius = 3.5e-3
 window = (0.0185, 0.0235)
 
 
-def readField(fn):
-    """A lagrangian field of an ascii case: a list of scalars or vectors
-    (n(...) on one line or over many, or n{value})."""
-    text = open(fn).read()
-    body = text[text.find("}", text.find("FoamFile")) + 1:]
-    m = re.search(r"(\d+)\s*([({])", body)
-    n = int(m.group(1))
-    if m.group(2) == "{":
-        return np.full(n, float(body[m.end():body.find("}", m.end())]))
-    if n == 0:
-        return np.zeros(0)
-    inner = body[m.end():]
-    if inner.lstrip().startswith("("):
-        rows = re.findall(r"\(([^()]*)\)", inner)[:n]
-        return np.array([[float(v) for v in r.split()] for r in rows])
-    return np.array([float(v) for v in inner.split(")")[0].split()[:n]])
-
-
 def lastFile(case, pattern):
     files = glob.glob(os.path.join(case, pattern))
     return max(files, key=lambda p: float(p.split(os.sep)[-2]))
@@ -68,26 +54,22 @@ def analyse(case):
     fpf = np.loadtxt(lastFile(case, "postProcessing/fpf/*/fpf.dat"))
     sysSum, boxSum, singSum = fpf[:, 1].sum(), fpf[:, 2].sum(), fpf[:, 3].sum()
 
-    times = sorted(
-        (t for t in os.listdir(case)
-         if re.fullmatch(r"[0-9.e-]+", t) and float(t) >= 0.01),
-        key=float)
+    # Stage 2's writes: from the stage-1 state at its end (the second time
+    # directory: each stage of inhalerVsN writes at its end only) on
     first = {}
     wN, wR, wU = [], [], []
     nWrites = 0
-    for t in times:
-        d = os.path.join(case, t, "lagrangian", "dpiCloud")
-        if not os.path.isdir(d):
+    for t in fl.times(case)[1:]:
+        if not os.path.isdir(fl.cloud_dir(case, t)):
             continue
         nWrites += 1
-        ty = readField(d + "/typeId")
+        c = fl.read_cloud(case, t, fields=("xDEM", "U", "typeId", "nParticle",
+                                           "globalId", "agglomerateId"))
+        ty = c["typeId"]
         if len(ty) == 0:
             continue
-        x = readField(d + "/xDEM")
-        U = readField(d + "/U")
-        N = readField(d + "/nParticle")
-        ag = readField(d + "/agglomerateId")
-        gid = readField(d + "/globalId")
+        x, U, N = c["xDEM"], c["U"], c["nParticle"]
+        ag, gid = c["agglomerateId"], c["globalId"]
         ids, counts = np.unique(ag, return_counts=True)
         alone = dict(zip(ids, counts == 1))
         for k in np.where(ty == 1)[0]:
