@@ -25,7 +25,10 @@ first class that holds within --window before it:
 Beside the classes: whether the host rests on a wall or on another
 carrier at the release (a contact open then, begun or not); and, as the
 control for the knocks, the share of releases with an API-API contact of
-the parcel begun within the window, against within the window before it. Shares are of
+the parcel begun within the window, against within the window before it;
+and the neighbour knocks (API-API contacts begun between two parcels on a
+common carrier) per parcel, with the share of them followed within the
+window by the release of either parcel. Shares are of
 the API primaries released (weighted by N); heights above the corner's
 floor (z = -3.5 mm) at the release.
 """
@@ -156,16 +159,35 @@ def analyse(case, t0):
         # begun in the window, and in the window before it
         knocks = [tr - b0 for b0, _, _ in apiIv.get(p, [])]
         rows.append(dict(
-            t=tr, z=xa[2] - floorZ, cls=cls,
+            p=p, t=tr, z=xa[2] - floorZ, cls=cls,
             restWall=openAt(wallIv.get(host, []), 0),
             restCarrier=openAt(ccIv.get(host, []), 0),
             spin=np.linalg.norm(wc), vrel=np.linalg.norm(va - vc),
             knockNow=any(0 <= d <= w for d in knocks),
             knockBefore=any(w < d <= 2*w for d in knocks)))
-    return rows
+
+    # The neighbour knocks: API-API contacts begun between two parcels on
+    # a common carrier, and how many are followed within the window by
+    # the release of either
+    released = {r["p"]: r["t"] for r in rows}
+    knocks, freeing = 0, 0
+    for (p, o), e in pairEv.items():
+        if types[o] != 1 or o < p:
+            continue
+        for t, st, _ in e:
+            if not st:
+                continue
+            hp = {c for c0, c1, _, c in carIv[p] if c0 <= t <= c1}
+            ho = {c for c0, c1, _, c in carIv.get(o, []) if c0 <= t <= c1}
+            if hp & ho:
+                knocks += 1
+                freeing += any(t <= released.get(q, -1) <= t + w
+                               for q in (p, o))
+    return rows, len(carIv), knocks, freeing
 
 
 pool = collections.defaultdict(list)
+poolKnocks = collections.defaultdict(lambda: np.zeros(3, int))
 out = ["# Which contact frees each API parcel", "",
        "`release.py` (window %g s, free for %g s); shares of the API "
        "primaries released, heights above the floor at the release." % (
@@ -180,9 +202,10 @@ for case in a.cases:
     if not m:
         raise SystemExit("release.py: %s is not an inhalerVsN case" % case)
     N = int(m.group(1))
-    rows = analyse(case, 0.01)
+    rows, nParcels, knocks, freeing = analyse(case, 0.01)
     variant = os.path.basename(os.path.dirname(os.path.abspath(case)))
     pool[(variant, N)] += rows
+    poolKnocks[(variant, N)] += np.array([nParcels, knocks, freeing])
     n = max(1, len(rows))
     c = collections.Counter(r["cls"] for r in rows)
     out.append("| %s/%s | %d | %.3f | %s | %.3f | %.3f |" % (
@@ -210,6 +233,11 @@ for (variant, N), rows in sorted(pool.items()):
                "%.3f / %.3f | | | | |" % (
                    variant, N, np.mean([r["restWall"] for r in rows]),
                    np.mean([r["restCarrier"] for r in rows])))
+    nParcels, knocks, freeing = poolKnocks[(variant, N)]
+    out.append("| %s, N = %d | neighbour knocks per parcel / share of them "
+               "followed by a release | %.2f / %.3f | | | | |" % (
+                   variant, N, knocks / max(1, nParcels),
+                   freeing / max(1, knocks)))
     out.append("| %s, N = %d | an API-API contact begun in the window / "
                "in the window before it | %.3f / %.3f | | | | |" % (
                    variant, N, np.mean([r["knockNow"] for r in rows]),
