@@ -194,8 +194,9 @@ out = ["# Which contact frees each API parcel", "",
            a.window, a.min_free), "",
        "## Per case", "",
        "| case | released | within 0.3 mm of the floor | "
-       + " | ".join(CLASSES) + " | host resting on a wall | on a carrier |",
-       "|---|" + "---:|" * (len(CLASSES) + 4)]
+       + " | ".join(CLASSES) + " | host resting on a wall | on a carrier "
+       "| neighbour knocks per parcel | share of them freeing |",
+       "|---|" + "---:|" * (len(CLASSES) + 6)]
 for case in a.cases:
     case = case.rstrip("/")
     m = re.search(r"N(\d+)-seed(\d+)$", case)
@@ -208,12 +209,13 @@ for case in a.cases:
     poolKnocks[(variant, N)] += np.array([nParcels, knocks, freeing])
     n = max(1, len(rows))
     c = collections.Counter(r["cls"] for r in rows)
-    out.append("| %s/%s | %d | %.3f | %s | %.3f | %.3f |" % (
+    out.append("| %s/%s | %d | %.3f | %s | %.3f | %.3f | %.2f | %.3f |" % (
         variant, os.path.basename(case), len(rows) * N,
         sum(r["z"] < near for r in rows) / n,
         " | ".join("%.3f" % (c[k] / n) for k in CLASSES),
         sum(r["restWall"] for r in rows) / n,
-        sum(r["restCarrier"] for r in rows) / n))
+        sum(r["restCarrier"] for r in rows) / n,
+        knocks / max(1, nParcels), freeing / max(1, knocks)))
 
 out += ["", "## Pooled over the seeds, per class", "",
         "| cases, N | class | share | median height [mm] | within 0.3 mm "
