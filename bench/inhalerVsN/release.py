@@ -27,8 +27,8 @@ carrier at the release (a contact open then, begun or not); and, as the
 control for the knocks, the share of releases with an API-API contact of
 the parcel begun within the window, against within the window before it;
 and the neighbour knocks (API-API contacts begun between two parcels on a
-common carrier) per parcel, with the share of them followed within the
-window by the release of either parcel. Shares are of
+common carrier) per parcel that touched a carrier in the run, with the
+share of them followed within the window by the release of either parcel. Shares are of
 the API primaries released (weighted by N); heights above the corner's
 floor (z = -3.5 mm) at the release.
 """
@@ -69,7 +69,7 @@ def intervals(events, t0, tEnd):
 
 def analyse(case, t0):
     pairEv = collections.defaultdict(list)   # (api, partner) -> events
-    ccEv = collections.defaultdict(list)     # carrier -> carrier contacts
+    ccEv = collections.defaultdict(list)     # (carrier, carrier) -> events
     wallEv = collections.defaultdict(list)   # particle -> wall contacts
     types = {}
     tEnd = t0
@@ -108,6 +108,10 @@ def analyse(case, t0):
             else:
                 apiIv[p].append((b0, b1, o))
 
+    def carriersAt(q, t):
+        """The carriers parcel q touches at time t"""
+        return {c for c0, c1, _, c in carIv.get(q, []) if c0 <= t <= c1}
+
     w = a.window
     rows = []
     for p, ivs in carIv.items():
@@ -128,10 +132,12 @@ def analyse(case, t0):
             if k + 1 == len(segs) or segs[k + 1][0] - s1 >= a.min_free:
                 release = (s1, r)
                 break
-        if release is None or release[1][2] is None:
+        # (a segment that ends before tEnd ends with a closed contact, so
+        # pay holds the state at its end)
+        if release is None:
             continue
         tr, (_, _, pay, host) = release
-        xa, va, _, xc, vc, wc = pay
+        xa, _, _, _, _, wc = pay
 
         def begun(ivList):
             return any(tr - w <= b0 <= tr and b0 > t0 for b0, _, _ in ivList)
@@ -151,7 +157,7 @@ def analyse(case, t0):
             ctx.add("hostCarrier")
         for b0, _, o in apiIv.get(p, []):
             if tr - w <= b0 <= tr:
-                on = [c for c0, c1, _, c in carIv.get(o, []) if c0 <= b0 <= c1]
+                on = carriersAt(o, b0)
                 ctx.add("knockFree" if not on else
                         "knockSame" if host in on else "knockOther")
         cls = next((c for c in CLASSES[:-1] if c in ctx), "none")
@@ -162,7 +168,7 @@ def analyse(case, t0):
             p=p, t=tr, z=xa[2] - floorZ, cls=cls,
             restWall=openAt(wallIv.get(host, []), 0),
             restCarrier=openAt(ccIv.get(host, []), 0),
-            spin=np.linalg.norm(wc), vrel=np.linalg.norm(va - vc),
+            spin=np.linalg.norm(wc),
             knockNow=any(0 <= d <= w for d in knocks),
             knockBefore=any(w < d <= 2*w for d in knocks)))
 
@@ -177,9 +183,7 @@ def analyse(case, t0):
         for t, st, _ in e:
             if not st:
                 continue
-            hp = {c for c0, c1, _, c in carIv[p] if c0 <= t <= c1}
-            ho = {c for c0, c1, _, c in carIv.get(o, []) if c0 <= t <= c1}
-            if hp & ho:
+            if carriersAt(p, t) & carriersAt(o, t):
                 knocks += 1
                 freeing += any(t <= released.get(q, -1) <= t + w
                                for q in (p, o))
