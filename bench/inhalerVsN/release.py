@@ -28,7 +28,10 @@ control for the knocks, the share of releases with an API-API contact of
 the parcel begun within the window, against within the window before it;
 and the neighbour knocks (API-API contacts begun between two parcels on a
 common carrier) per parcel that touched a carrier in the run, with the
-share of them followed within the window by the release of either parcel. Shares are of
+share of them followed within the window by the release of either parcel,
+split into the first meeting of each pair and its repeats, and into
+knocks approaching at FAST (0.1 m/s) or more along the line of centres
+and slower ones. Shares are of
 the API primaries released (weighted by N); heights above the corner's
 floor (z = -3.5 mm) at the release.
 """
@@ -48,6 +51,7 @@ a = ap.parse_args()
 
 floorZ = -3.5e-3
 near = 0.3e-3
+FAST = 0.1      # m/s: a knock's approach speed along the line of centres
 CLASSES = ["wall", "carrier2", "hostWall", "hostCarrier",
            "knockFree", "knockOther", "knockSame", "none"]
 
@@ -176,22 +180,30 @@ def analyse(case, t0):
     # a common carrier, and how many are followed within the window by
     # the release of either
     released = {r["p"]: r["t"] for r in rows}
-    knocks, freeing = 0, 0
+    # [all, first meetings of the pair, approach >= FAST, slower]: knocks,
+    # and how many of them free a parcel
+    knocks, freeing = np.zeros(4, int), np.zeros(4, int)
     for (p, o), e in pairEv.items():
         if types[o] != 1 or o < p:
             continue
-        for t, st, _ in e:
+        met = False
+        for t, st, pay in e:
             if not st:
                 continue
             if carriersAt(p, t) & carriersAt(o, t):
-                knocks += 1
-                freeing += any(t <= released.get(q, -1) <= t + w
-                               for q in (p, o))
+                xp, vp, _, xo, vo, _ = pay
+                n = (xo - xp)/np.linalg.norm(xo - xp)
+                fast = np.dot(vp - vo, n) >= FAST
+                which = np.array([True, not met, fast, not fast])
+                met = True
+                knocks += which
+                freeing += which*any(t <= released.get(q, -1) <= t + w
+                                     for q in (p, o))
     return rows, len(carIv), knocks, freeing
 
 
 pool = collections.defaultdict(list)
-poolKnocks = collections.defaultdict(lambda: np.zeros(3, int))
+poolKnocks = collections.defaultdict(lambda: np.zeros(9, int))
 out = ["# Which contact frees each API parcel", "",
        "`release.py` (window %g s, free for %g s); shares of the API "
        "primaries released, heights above the floor at the release." % (
@@ -210,7 +222,7 @@ for case in a.cases:
     rows, nParcels, knocks, freeing = analyse(case, 0.01)
     variant = os.path.basename(os.path.dirname(os.path.abspath(case)))
     pool[(variant, N)] += rows
-    poolKnocks[(variant, N)] += np.array([nParcels, knocks, freeing])
+    poolKnocks[(variant, N)] += np.concatenate([[nParcels], knocks, freeing])
     n = max(1, len(rows))
     c = collections.Counter(r["cls"] for r in rows)
     out.append("| %s/%s | %d | %.3f | %s | %.3f | %.3f | %.2f | %.3f |" % (
@@ -219,7 +231,7 @@ for case in a.cases:
         " | ".join("%.3f" % (c[k] / n) for k in CLASSES),
         sum(r["restWall"] for r in rows) / n,
         sum(r["restCarrier"] for r in rows) / n,
-        knocks / max(1, nParcels), freeing / max(1, knocks)))
+        knocks[0] / max(1, nParcels), freeing[0] / max(1, knocks[0])))
 
 out += ["", "## Pooled over the seeds, per class", "",
         "| cases, N | class | share | median height [mm] | within 0.3 mm "
@@ -239,11 +251,16 @@ for (variant, N), rows in sorted(pool.items()):
                "%.3f / %.3f | | | | |" % (
                    variant, N, np.mean([r["restWall"] for r in rows]),
                    np.mean([r["restCarrier"] for r in rows])))
-    nParcels, knocks, freeing = poolKnocks[(variant, N)]
-    out.append("| %s, N = %d | neighbour knocks per parcel / share of them "
-               "followed by a release | %.2f / %.3f | | | | |" % (
-                   variant, N, knocks / max(1, nParcels),
-                   freeing / max(1, knocks)))
+    nParcels, knocks, freeing = (poolKnocks[(variant, N)][0],
+                                 poolKnocks[(variant, N)][1:5],
+                                 poolKnocks[(variant, N)][5:9])
+    for k, what in enumerate(["", " (first meetings of a pair)",
+                              " (approaching at >= %g m/s)" % FAST,
+                              " (approaching slower)"]):
+        out.append("| %s, N = %d | neighbour knocks%s per parcel / share "
+                   "of them followed by a release | %.2f / %.3f | | | | |" % (
+                       variant, N, what, knocks[k] / max(1, nParcels),
+                       freeing[k] / max(1, knocks[k])))
     out.append("| %s, N = %d | an API-API contact begun in the window / "
                "in the window before it | %.3f / %.3f | | | | |" % (
                    variant, N, np.mean([r["knockNow"] for r in rows]),

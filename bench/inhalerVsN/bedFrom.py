@@ -1,0 +1,160 @@
+#!/usr/bin/env python3
+"""The bed of an inhalerVsN case made from another run's settled bed.
+
+Usage: bedFrom.py CASE --N N --from SETTLED [--seed 86] [--recoat]
+                  [--coarse-graining scaledContacts|coatingCoverage]
+Writes CASE/constant/bedParticles (a singleParticles list) and prints
+"carriers apiParcels primaries", as bed.py does.
+
+SETTLED is a finished inhalerVsN case (any N). Its particles at the end
+of its stage 1 (the first written time after 0 with lagrangian fields) are
+the start of CASE: every carrier where it came to rest. If SETTLED's API
+parcels are all of N primaries, they also keep their places, so the case
+repeats SETTLED's bed (unless --recoat). Otherwise each carrier's API (a parcel belongs to
+its nearest carrier) is regrouped into parcels of N: the carrier's n
+primaries (nParticle summed) make round(n/N) parcels, adjusted so that
+the total is round(P/N) of the P primaries (the carriers with the largest
+remainders take the extra parcels), placed as bed.py places them (a random
+spot of the carrier's surface, at the carrier-API adhesive equilibrium
+overlap, the parcels at least one diameter apart, sqrt(N) diameters with
+coatingCoverage), and also clear of the other carriers and of the
+corner's floor. The floor is the bottom of the 7 mm tube as the mesh
+draws it: faces about 15 degrees of the circle wide (the tutorial's
+blockMeshDict, --ns 6), with an edge along its lowest line (z = -3.5 mm
+at y = 0); under the bed their points rise 137-140 um over 958-967 um of
+y, so the floor is taken as z = -3.5 mm + 0.15 |y| (10 um at |y| = 70
+um: a primary under a carrier placed against a flat floor would start
+outside the mesh or in the wall).
+
+Everything starts at rest. What this is for: a run of N = 10 from the bed
+N = 1 settled into has N = 1's sedimentation and N = 10's breath (and a
+run of N = 1 from N = 10's bed the other way round), so comparing it with
+N = 1 tells whether a bias is made while the powder settles or while the
+gas blows (bench/README.md section 4b).
+"""
+import argparse
+import glob
+import math
+import os
+import re
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "costVsN"))
+import powder  # noqa: E402
+
+FLOOR_Z = -3.5e-3                       # the floor's lowest line, y = 0
+FLOOR_SLOPE = 0.15                      # its faces on either side, at most
+CARRIER, API = 0, 1
+
+
+def readList(path):
+    """An OpenFOAM ascii list of scalars or vectors (a uniform list of
+    scalars, n{v}, too)"""
+    with open(path) as f:
+        lines = f.read().split("\n")
+    for s in lines:
+        m = re.fullmatch(r"\s*(\d+)\s*\{\s*([-+.eE\d]+)\s*\}\s*", s)
+        if m:
+            return np.full(int(m.group(1)), float(m.group(2)))
+    i = next(k for k, s in enumerate(lines) if s.strip() == "(")
+    n = int(lines[i - 1])
+    out = []
+    for s in lines[i + 1:i + 1 + n]:
+        s = s.strip().strip("()")
+        out.append([float(v) for v in s.split()] if " " in s else float(s))
+    return np.array(out)
+
+
+def settledState(case):
+    """(carrier positions, API positions, the API's primaries per parcel)
+    at the end of case's stage 1"""
+    times = []
+    for d in glob.glob(os.path.join(case, "*", "lagrangian", "*", "xDEM")):
+        t = d.split(os.sep)[-4]
+        try:
+            if float(t) > 0:
+                times.append((float(t), d))
+        except ValueError:
+            pass
+    if not times:
+        sys.exit("bedFrom.py: %s has no written time after 0 with "
+                 "lagrangian/*/xDEM" % case)
+    xdem = min(times)[1]
+    x = readList(xdem)
+    typeId = readList(os.path.join(os.path.dirname(xdem), "typeId"))
+    n = readList(os.path.join(os.path.dirname(xdem), "nParticle"))
+    return x[typeId == CARRIER], x[typeId == API], n[typeId == API]
+
+
+def regroup(rng, C, A, nA, N, grow):
+    """The API A (of nA primaries each) of the carriers C as parcels of N
+    (see the header)"""
+    rc, ra = powder.DC/2, powder.DA/2
+    host = np.argmin(np.linalg.norm(A[:, None] - C[None], axis=2), axis=1)
+    share = np.bincount(host, weights=nA, minlength=len(C))/N
+    per = np.floor(share + 1e-9).astype(int)
+    extra = max(1, int(round(nA.sum()/N))) - per.sum()
+    order = np.lexsort((rng.random(len(C)), -(share - per)))
+    per[order[:extra]] += 1
+    dist = rc + ra - powder.DELTA_EQ
+    dmin = grow*powder.DA*(1 + 1e-3)
+    out = np.zeros((0, 3))
+    for k, c in enumerate(C):
+        others = np.delete(C, k, axis=0)
+        placed, tries = 0, 0
+        while placed < per[k]:
+            tries += 1
+            if tries > 200000:
+                sys.exit("bedFrom.py: cannot place %d parcels on carrier %d"
+                         % (per[k], k))
+            u = rng.normal(size=3)
+            p = c + dist*u/np.linalg.norm(u)
+            if p[2] - ra < FLOOR_Z + FLOOR_SLOPE*abs(p[1]) + 1e-7:
+                continue
+            if len(others) and \
+                    np.min(np.linalg.norm(others - p, axis=1)) < rc + ra:
+                continue
+            if len(out) and np.min(np.linalg.norm(out - p, axis=1)) < dmin:
+                continue
+            out = np.vstack([out, p])
+            placed += 1
+    return out
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawTextHelpFormatter)
+    ap.add_argument("case")
+    ap.add_argument("--N", type=int, required=True)
+    ap.add_argument("--from", dest="settled", required=True)
+    ap.add_argument("--seed", type=int, default=86)
+    ap.add_argument("--recoat", action="store_true",
+                    help="regroup the API also when N is SETTLED's")
+    ap.add_argument("--coarse-graining", default="scaledContacts",
+                    choices=["scaledContacts", "coatingCoverage"])
+    a = ap.parse_args()
+    if a.N < 1:
+        sys.exit("bedFrom.py: --N must be positive, got %d" % a.N)
+    C, A, nA = settledState(a.settled)
+    if np.all(nA == a.N) and not a.recoat:
+        api = A
+    else:
+        grow = math.sqrt(a.N) if a.coarse_graining == "coatingCoverage" \
+            else 1.0
+        api = regroup(np.random.default_rng(a.seed), C, A, nA, a.N, grow)
+    lines = ["{ type carrier; position (%.12e %.12e %.12e); }" % tuple(c)
+             for c in C]
+    lines += ["{ type API; position (%.12e %.12e %.12e); }" % tuple(p)
+              for p in api]
+    with open(os.path.join(a.case, "constant", "bedParticles"), "w") as f:
+        f.write("// bench/inhalerVsN/bedFrom.py: the settled carriers of %s,"
+                " API as parcels of N = %d\nparticles\n(\n%s\n);\n"
+                % (os.path.abspath(a.settled), a.N, "\n".join(lines)))
+    print(len(C), len(api), len(api)*a.N)
+
+
+if __name__ == "__main__":
+    main()
