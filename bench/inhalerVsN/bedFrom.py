@@ -2,6 +2,7 @@
 """The bed of an inhalerVsN case made from another run's settled bed.
 
 Usage: bedFrom.py CASE --N N --from SETTLED [--seed 86] [--recoat]
+                  [--keep-motion]
                   [--coarse-graining scaledContacts|coatingCoverage]
 Writes CASE/constant/bedParticles (a singleParticles list) and prints
 "carriers apiParcels primaries", as bed.py does.
@@ -26,7 +27,9 @@ y, so the floor is taken as z = -3.5 mm + 0.15 |y| (10 um at |y| = 70
 um: a primary under a carrier placed against a flat floor would start
 outside the mesh or in the wall).
 
-Everything starts at rest. What this is for: a run of N = 10 from the bed
+Everything starts at rest, unless --keep-motion: then, where the API keep
+their places, every particle also keeps its velocity and spin (what the
+new start still resets is the contacts' histories). What this is for: a run of N = 10 from the bed
 N = 1 settled into has N = 1's sedimentation and N = 10's breath (and a
 run of N = 1 from N = 10's bed the other way round), so comparing it with
 N = 1 tells whether a bias is made while the powder settles or while the
@@ -68,9 +71,10 @@ def readList(path):
     return np.array(out)
 
 
-def settledState(case):
+def settledState(case, motion=False):
     """(carrier positions, API positions, the API's primaries per parcel)
-    at the end of case's stage 1"""
+    at the end of case's stage 1; with motion also (U, omega) of carriers
+    and API"""
     times = []
     for d in glob.glob(os.path.join(case, "*", "lagrangian", "*", "xDEM")):
         t = d.split(os.sep)[-4]
@@ -86,7 +90,13 @@ def settledState(case):
     x = readList(xdem)
     typeId = readList(os.path.join(os.path.dirname(xdem), "typeId"))
     n = readList(os.path.join(os.path.dirname(xdem), "nParticle"))
-    return x[typeId == CARRIER], x[typeId == API], n[typeId == API]
+    out = (x[typeId == CARRIER], x[typeId == API], n[typeId == API])
+    if motion:
+        U = readList(os.path.join(os.path.dirname(xdem), "U"))
+        w = readList(os.path.join(os.path.dirname(xdem), "omega"))
+        out += ((U[typeId == CARRIER], w[typeId == CARRIER]),
+                (U[typeId == API], w[typeId == API]))
+    return out
 
 
 def regroup(rng, C, A, nA, N, grow):
@@ -133,22 +143,39 @@ def main():
     ap.add_argument("--seed", type=int, default=86)
     ap.add_argument("--recoat", action="store_true",
                     help="regroup the API also when N is SETTLED's")
+    ap.add_argument("--keep-motion", action="store_true",
+                    help="keep the velocities and spins where the API are "
+                    "kept")
     ap.add_argument("--coarse-graining", default="scaledContacts",
                     choices=["scaledContacts", "coatingCoverage"])
     a = ap.parse_args()
     if a.N < 1:
         sys.exit("bedFrom.py: --N must be positive, got %d" % a.N)
-    C, A, nA = settledState(a.settled)
-    if np.all(nA == a.N) and not a.recoat:
+    C, A, nA, *motion = settledState(a.settled, a.keep_motion)
+    kept = np.all(nA == a.N) and not a.recoat
+    if a.keep_motion and not kept:
+        sys.exit("bedFrom.py: --keep-motion needs the API kept in place "
+                 "(the same N as %s, no --recoat)" % a.settled)
+    if kept:
         api = A
     else:
         grow = math.sqrt(a.N) if a.coarse_graining == "coatingCoverage" \
             else 1.0
         api = regroup(np.random.default_rng(a.seed), C, A, nA, a.N, grow)
-    lines = ["{ type carrier; position (%.12e %.12e %.12e); }" % tuple(c)
-             for c in C]
-    lines += ["{ type API; position (%.12e %.12e %.12e); }" % tuple(p)
-              for p in api]
+
+    def entry(kind, x, k, moving):
+        if not a.keep_motion:
+            return "{ type %s; position (%.12e %.12e %.12e); }" % (
+                (kind,) + tuple(x))
+        U, w = moving[0][k], moving[1][k]
+        return ("{ type %s; position (%.12e %.12e %.12e); "
+                "U (%.12e %.12e %.12e); omega (%.12e %.12e %.12e); }"
+                % ((kind,) + tuple(x) + tuple(U) + tuple(w)))
+
+    lines = [entry("carrier", c, k, motion[0] if motion else None)
+             for k, c in enumerate(C)]
+    lines += [entry("API", p, k, motion[1] if motion else None)
+              for k, p in enumerate(api)]
     with open(os.path.join(a.case, "constant", "bedParticles"), "w") as f:
         f.write("// bench/inhalerVsN/bedFrom.py: the settled carriers of %s,"
                 " API as parcels of N = %d\nparticles\n(\n%s\n);\n"
