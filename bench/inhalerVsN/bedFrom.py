@@ -36,16 +36,16 @@ N = 1 tells whether a bias is made while the powder settles or while the
 gas blows (bench/README.md section 4b).
 """
 import argparse
-import glob
 import math
 import os
-import re
 import sys
 
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "costVsN"))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "tutorials", "scripts"))
+import foamLagrangian as fl  # noqa: E402
 import powder  # noqa: E402
 
 FLOOR_Z = -3.5e-3                       # the floor's lowest line, y = 0
@@ -53,47 +53,21 @@ FLOOR_SLOPE = 0.15                      # its faces on either side, at most
 CARRIER, API = 0, 1
 
 
-def readList(path):
-    """An OpenFOAM ascii list of scalars or vectors (a uniform list of
-    scalars, n{v}, too)"""
-    with open(path) as f:
-        lines = f.read().split("\n")
-    for s in lines:
-        m = re.fullmatch(r"\s*(\d+)\s*\{\s*([-+.eE\d]+)\s*\}\s*", s)
-        if m:
-            return np.full(int(m.group(1)), float(m.group(2)))
-    i = next(k for k, s in enumerate(lines) if s.strip() == "(")
-    n = int(lines[i - 1])
-    out = []
-    for s in lines[i + 1:i + 1 + n]:
-        s = s.strip().strip("()")
-        out.append([float(v) for v in s.split()] if " " in s else float(s))
-    return np.array(out)
-
-
 def settledState(case, motion=False):
     """(carrier positions, API positions, the API's primaries per parcel)
     at the end of case's stage 1; with motion also (U, omega) of carriers
-    and API"""
-    times = []
-    for d in glob.glob(os.path.join(case, "*", "lagrangian", "*", "xDEM")):
-        t = d.split(os.sep)[-4]
-        try:
-            if float(t) > 0:
-                times.append((float(t), d))
-        except ValueError:
-            pass
-    if not times:
+    and API. In the order the fields list them."""
+    d = next((fl.cloud_dir(case, t) for t in fl.times(case) if float(t) > 0
+              and os.path.isfile(os.path.join(fl.cloud_dir(case, t), "xDEM"))),
+             None)
+    if d is None:
         sys.exit("bedFrom.py: %s has no written time after 0 with "
-                 "lagrangian/*/xDEM" % case)
-    xdem = min(times)[1]
-    x = readList(xdem)
-    typeId = readList(os.path.join(os.path.dirname(xdem), "typeId"))
-    n = readList(os.path.join(os.path.dirname(xdem), "nParticle"))
+                 "lagrangian/dpiCloud/xDEM" % case)
+    x, typeId, n = (fl.read_field(os.path.join(d, f))
+                    for f in ("xDEM", "typeId", "nParticle"))
     out = (x[typeId == CARRIER], x[typeId == API], n[typeId == API])
     if motion:
-        U = readList(os.path.join(os.path.dirname(xdem), "U"))
-        w = readList(os.path.join(os.path.dirname(xdem), "omega"))
+        U, w = (fl.read_field(os.path.join(d, f)) for f in ("U", "omega"))
         out += ((U[typeId == CARRIER], w[typeId == CARRIER]),
                 (U[typeId == API], w[typeId == API]))
     return out
