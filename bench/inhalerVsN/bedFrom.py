@@ -53,16 +53,19 @@ FLOOR_SLOPE = 0.15                      # its faces on either side, at most
 CARRIER, API = 0, 1
 
 
-def settledState(case, motion=False):
+def settledState(case, motion=False, time=None):
     """(carrier positions, API positions, the API's primaries per parcel)
-    at the end of case's stage 1; with motion also (U, omega) of carriers
-    and API. In the order the fields list them."""
-    d = next((fl.cloud_dir(case, t) for t in fl.times(case) if float(t) > 0
+    at the end of case's stage 1 (the first written time after 0), or at
+    time; with motion also (U, omega) of carriers and API. In the order the
+    fields list them."""
+    d = next((fl.cloud_dir(case, t) for t in fl.times(case)
+              if (float(t) > 0 if time is None else t == time)
               and os.path.isfile(os.path.join(fl.cloud_dir(case, t), "xDEM"))),
              None)
     if d is None:
-        sys.exit("bedFrom.py: %s has no written time after 0 with "
-                 "lagrangian/dpiCloud/xDEM" % case)
+        sys.exit("bedFrom.py: %s has no written time %s with "
+                 "lagrangian/dpiCloud/xDEM"
+                 % (case, "after 0" if time is None else time))
     x, typeId, n = (fl.read_field(os.path.join(d, f))
                     for f in ("xDEM", "typeId", "nParticle"))
     out = (x[typeId == CARRIER], x[typeId == API], n[typeId == API])

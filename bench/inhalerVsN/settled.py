@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """The settled bed of inhalerVsN cases, at the end of their stage 1.
 
-Usage: settled.py GROUP=CASE[,CASE...] ... [--md settled.md]
+Usage: settled.py GROUP=CASE[,CASE...][@TIME] ... [--md settled.md]
 
 Per case, from the particles at the first written time after 0 (the end
-of stage 1, when the gas comes on), and per GROUP the mean over its cases:
+of stage 1, when the gas comes on), or at TIME (a time directory's name),
+and per GROUP the mean over its cases:
   height     the carriers' centres above the corner's floor (z = -3.5 mm),
              mean [um]
   spread     the carriers' distance from the cone's axis (x = 39 mm,
@@ -19,6 +20,7 @@ of stage 1, when the gas comes on), and per GROUP the mean over its cases:
   touching   share of the API parcels touching another parcel at
              coatingCoverage's contact distance (sqrt(N) primary
              diameters; one diameter at N = 1)
+  moving     the carriers' mean speed [mm/s] (still settling, or at rest)
 """
 import argparse
 import os
@@ -35,8 +37,8 @@ from bedFrom import FLOOR_SLOPE, FLOOR_Z, settledState  # noqa: E402
 AXIS = (0.039, 0.0)
 
 
-def measure(case):
-    C, A, nA = settledState(case)
+def measure(case, time=None):
+    C, A, nA, (UC, _), _ = settledState(case, motion=True, time=time)
     rc, ra = powder.DC/2, powder.DA/2
     D = np.linalg.norm(C[:, None] - C[None], axis=2)
     bare = int(np.sum(np.triu(D < 2*rc + 1e-7, 1)))
@@ -53,30 +55,36 @@ def measure(case):
         wedged=np.sum(nA*((second < 2e-6) | (floor < 2e-6)))/np.sum(nA),
         touching=np.mean(np.any(
             dAA < (np.sqrt(nA[:, None]) + np.sqrt(nA[None]))*ra*(1 + 2e-3),
-            axis=1)))
+            axis=1)),
+        moving=1e3*np.mean(np.linalg.norm(UC, axis=1)))
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawTextHelpFormatter)
-    ap.add_argument("groups", nargs="+", metavar="GROUP=CASE[,CASE...]")
+    ap.add_argument("groups", nargs="+", metavar="GROUP=CASE[,CASE...][@TIME]")
     ap.add_argument("--md", default="settled.md")
     a = ap.parse_args()
-    keys = ["height", "spread", "bare", "nearAPI", "wedged", "touching"]
+    keys = ["height", "spread", "bare", "nearAPI", "wedged", "touching",
+            "moving"]
     out = ["# The settled beds (`settled.py`)", "",
            "| group | cases | carriers' height [um] | distance from the "
            "axis [um] | bare carrier pairs | API within 10 um of another "
-           "carrier | API wedged | parcels touching a parcel |",
-           "|---|---:|---:|---:|---:|---:|---:|---:|"]
+           "carrier | API wedged | parcels touching a parcel | carriers' speed "
+           "[mm/s] |",
+           "|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for g in a.groups:
         name, _, cases = g.partition("=")
+        cases, _, time = cases.partition("@")
         if not cases:
-            sys.exit("settled.py: %s is not GROUP=CASE[,CASE...]" % g)
-        rows = [measure(c) for c in cases.split(",")]
+            sys.exit("settled.py: %s is not GROUP=CASE[,CASE...][@TIME]" % g)
+        rows = [measure(c, time or None) for c in cases.split(",")]
         m = {k: np.mean([r[k] for r in rows]) for k in keys}
-        out.append("| %s | %d | %.1f | %.1f | %.1f | %.3f | %.3f | %.3f |" % (
-            name, len(rows), m["height"], m["spread"], m["bare"],
-            m["nearAPI"], m["wedged"], m["touching"]))
+        out.append("| %s | %d | %.1f | %.1f | %.1f | %.3f | %.3f | %.3f "
+                   "| %.1f |" % (
+                       name, len(rows), m["height"], m["spread"], m["bare"],
+                       m["nearAPI"], m["wedged"], m["touching"],
+                       m["moving"]))
     with open(a.md, "w") as f:
         f.write("\n".join(out) + "\n")
     print("\n".join(out))
