@@ -33,9 +33,11 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 "..", "..", "tutorials", "scripts"))
 import foamLagrangian as fl  # noqa: E402
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from bedFrom import API, CARRIER  # noqa: E402
 
 KINDS = ("cc", "cw", "ac", "aa", "aw")
-TYPES = ("carrier", "API")    # typeId 0, 1
+TYPES = {"carrier": CARRIER, "API": API}    # name: typeId
 _TOKEN = re.compile(r"\d+\s*\{[^}]*\}|\(|\)|[^\s()]+")
 
 
@@ -100,13 +102,13 @@ def kinds(typeId, globalId, keys):
     typeOf = dict(zip(globalId.astype(int), typeId.astype(int)))
     out = []
     for i, row in enumerate(keys):
-        own = "a" if typeId[i] == 1 else "c"
+        own = "a" if typeId[i] == API else "c"
         ks = []
         for key in row:
             if key < 0:
                 ks.append(own + "w")
             else:
-                other = "a" if typeOf.get(key, -1) == 1 else "c"
+                other = "a" if typeOf.get(key, -1) == API else "c"
                 ks.append("".join(sorted(own + other)))
         out.append(ks)
     return out
@@ -160,13 +162,13 @@ def main():
         print("# reset: %s" % ",".join(reset))
     U = fl.read_field(os.path.join(d, "U"))
     omega = fl.read_field(os.path.join(d, "omega"))
-    for t, name in enumerate(TYPES):
+    for name, t in TYPES.items():
         m = typeId == t
         print("%s |U| %.3g |omega| %.3g" % (
             name, np.linalg.norm(U[m], axis=1).mean() if m.any() else 0,
             np.linalg.norm(omega[m], axis=1).mean() if m.any() else 0))
     if still:
-        m = np.isin(typeId, [TYPES.index(k) for k in still])
+        m = np.isin(typeId, [TYPES[k] for k in still])
         U[m] = 0
         omega[m] = 0
         fl.write_vector_field(os.path.join(d, "U"), U)
