@@ -25,7 +25,6 @@ copy).
 
 import argparse
 import os
-import re
 import sys
 
 import numpy as np
@@ -38,63 +37,6 @@ from bedFrom import API, CARRIER  # noqa: E402
 
 KINDS = ("cc", "cw", "ac", "aa", "aw")
 TYPES = {"carrier": CARRIER, "API": API}    # name: typeId
-_TOKEN = re.compile(r"\d+\s*\{[^}]*\}|\(|\)|[^\s()]+")
-
-
-def _list(tokens, k, item):
-    """Parse 'n ( items )' or 'n{v}' from tokens[k]: (values, next k)."""
-    t = tokens[k]
-    if "{" in t:
-        # a uniform list: only an empty one is expected here
-        if int(t[:t.index("{")]) != 0:
-            raise ValueError("a uniform history list: %s" % t)
-        return [], k + 1
-    n = int(t)
-    if tokens[k + 1] != "(":
-        raise ValueError("expected '(' after %d" % n)
-    k += 2
-    out = []
-    while tokens[k] != ")":
-        v, k = item(tokens, k)
-        out.append(v)
-    if len(out) != n:
-        raise ValueError("list size %d but %d entries" % (n, len(out)))
-    return out, k + 1
-
-
-def _label(tokens, k):
-    return int(tokens[k]), k + 1
-
-
-def _vector(tokens, k):
-    if tokens[k] != "(" or tokens[k + 4] != ")":
-        raise ValueError("expected a vector at token %d" % k)
-    return tuple(float(x) for x in tokens[k + 1:k + 4]), k + 5
-
-
-def read_nested(path, item):
-    """The rows of a labelFieldField or vectorFieldField file, and its
-    header (kept for writing)."""
-    header, body = fl.split_header(open(path).read())
-    body = re.sub(r"//.*", "", body)
-    tokens = _TOKEN.findall(body)
-    rows, _ = _list(tokens, 0, lambda t, k: _list(t, k, item))
-    return header, rows
-
-
-def write_nested(path, header, rows, fmt):
-    lines = [header.rstrip("\n"), "", "", str(len(rows)), "("]
-    for r in rows:
-        if not r:
-            lines.append("0()")
-            continue
-        lines += [str(len(r)), "("] + [fmt(v) for v in r] + [")"]
-    lines += [")", "", "", "// " + "*" * 73 + " //", ""]
-    open(path, "w").write("\n".join(lines))
-
-
-def fmtVector(v):
-    return "(%s)" % " ".join(repr(float(x)) for x in v)
 
 
 def kinds(typeId, globalId, keys):
@@ -134,8 +76,8 @@ def main():
     d = fl.cloud_dir(a.case, a.time)
     typeId = fl.read_field(os.path.join(d, "typeId"))
     globalId = fl.read_field(os.path.join(d, "globalId"))
-    hk, keys = read_nested(os.path.join(d, "contactKeys"), _label)
-    hx, xi = read_nested(os.path.join(d, "contactXi"), _vector)
+    keys = fl.read_nested_field(os.path.join(d, "contactKeys"))
+    xi = fl.read_nested_field(os.path.join(d, "contactXi"), vectors=True)
     if len(keys) != len(typeId) or len(xi) != len(typeId) \
             or any(len(a_) != len(b_) for a_, b_ in zip(keys, xi)):
         sys.exit("handOver.py: %s: contactKeys, contactXi and typeId "
@@ -157,8 +99,9 @@ def main():
             keep = [j for j, k in enumerate(row) if k not in reset]
             newKeys.append([rk[j] for j in keep])
             newXi.append([rx[j] for j in keep])
-        write_nested(os.path.join(d, "contactKeys"), hk, newKeys, str)
-        write_nested(os.path.join(d, "contactXi"), hx, newXi, fmtVector)
+        fl.write_nested_field(os.path.join(d, "contactKeys"), newKeys)
+        fl.write_nested_field(os.path.join(d, "contactXi"), newXi,
+                              vectors=True)
         print("# reset: %s" % ",".join(reset))
     U = fl.read_field(os.path.join(d, "U"))
     omega = fl.read_field(os.path.join(d, "omega"))

@@ -6,7 +6,10 @@ needed. Handles the three ASCII list forms OpenFOAM writes:
     N{value}                  (uniform)
     N(v0 v1 ...)              (one line)
     N\n(\nv0\nv1\n...\n)      (one entry per line)
-with vector entries written as (x y z).
+with vector entries written as (x y z); and the per-parcel lists of the
+contact histories (IOField<labelField>, IOField<vectorField>: contactKeys,
+contactXi), a list of such lists, by read_nested_field and
+write_nested_field.
 """
 import os
 import re
@@ -64,16 +67,86 @@ def read_field(path):
     return _parse_body(body)
 
 
-def write_vector_field(path, values):
-    """Rewrite the list of a vector IOField, keeping its header."""
+def _rewrite_list(path, lines):
+    """Replace the body of an OpenFOAM file by the list lines (from its
+    size to its closing ')'), keeping its header."""
     with open(path) as f:
         header, _ = split_header(f.read())
-    values = np.atleast_2d(values)
-    lines = ["", "", "%d" % len(values), "("]
-    lines += ["(%.17g %.17g %.17g)" % tuple(v) for v in values]
-    lines += [")", "", "", "// " + "*"*73 + " //", ""]
     with open(path, "w") as f:
-        f.write(header + "\n".join(lines))
+        f.write(header + "\n".join(["", ""] + lines
+                                   + ["", "", "// " + "*"*73 + " //", ""]))
+
+
+def _vector_text(v):
+    # 17 significant digits: the double read back is the one written
+    return "(%.17g %.17g %.17g)" % tuple(v)
+
+
+def write_vector_field(path, values):
+    """Rewrite the list of a vector IOField, keeping its header."""
+    values = np.atleast_2d(values)
+    _rewrite_list(path, ["%d" % len(values), "("]
+                  + [_vector_text(v) for v in values] + [")"])
+
+
+# a nested list's tokens: a uniform list 'n{...}', a parenthesis, a word
+_TOKEN = re.compile(r"\d+\s*\{[^}]*\}|\(|\)|[^\s()]+")
+
+
+def _nested_list(tokens, k, item):
+    """Parse 'n ( items )' or 'n{v}' from tokens[k]: (values, next k)."""
+    t = tokens[k]
+    if "{" in t:
+        # OpenFOAM writes an empty list of a nested field as 0{}
+        if int(t[:t.index("{")]) != 0:
+            raise ValueError("a uniform nested list: %s" % t)
+        return [], k + 1
+    n = int(t)
+    if tokens[k + 1] != "(":
+        raise ValueError("expected '(' after %d" % n)
+    k += 2
+    out = []
+    while tokens[k] != ")":
+        v, k = item(tokens, k)
+        out.append(v)
+    if len(out) != n:
+        raise ValueError("list size %d but %d entries" % (n, len(out)))
+    return out, k + 1
+
+
+def _label_item(tokens, k):
+    return int(tokens[k]), k + 1
+
+
+def _vector_item(tokens, k):
+    if tokens[k] != "(" or tokens[k + 4] != ")":
+        raise ValueError("expected a vector at token %d" % k)
+    return tuple(float(x) for x in tokens[k + 1:k + 4]), k + 5
+
+
+def read_nested_field(path, vectors=False):
+    """The rows of an IOField<labelField> (vectors=False) or
+    IOField<vectorField> (vectors=True): a list per parcel, of ints or of
+    (x, y, z) tuples."""
+    with open(path) as f:
+        _, body = split_header(f.read())
+    tokens = _TOKEN.findall(re.sub(r"//.*", "", body))
+    item = _vector_item if vectors else _label_item
+    rows, _ = _nested_list(tokens, 0, lambda t, k: _nested_list(t, k, item))
+    return rows
+
+
+def write_nested_field(path, rows, vectors=False):
+    """Rewrite the rows of a nested IOField (read_nested_field's form),
+    keeping its header."""
+    text = _vector_text if vectors else str
+    lines = [str(len(rows)), "("]
+    for r in rows:
+        if r:
+            lines += ["%d" % len(r), "("] + [text(v) for v in r] + [")"]
+        else:
+            lines.append("0()")
+    _rewrite_list(path, lines + [")"])
 
 
 def cloud_dir(case, time, cloud="dpiCloud"):
