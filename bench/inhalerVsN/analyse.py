@@ -146,12 +146,19 @@ def main():
                                                  "out of the outlet"))):
         for c, N in enumerate(Ns):
             idx = [i for i in range(len(runs)) if runs[i]["N"] == N]
+            # The runs' logs need not start at one time or sample the same
+            # times (a run restarted from another's state logs only what
+            # it ran): each curve is read at the first run's times inside
+            # the span that every run covers, not sample by sample
+            lo = max(curves[i][0][0] for i in idx)
+            hi = min(curves[i][0][-1] for i in idx)
             t = curves[idx[0]][0]
-            n = min(len(curves[i][0]) for i in idx)
-            y = np.array([curves[i][1 + j][:n] for i in idx])
-            ax.plot(1e3*t[:n], y.mean(axis=0), color="C%d" % c,
+            t = t[(t >= lo) & (t <= hi)]
+            y = np.array([np.interp(t, curves[i][0], curves[i][1 + j])
+                          for i in idx])
+            ax.plot(1e3*t, y.mean(axis=0), color="C%d" % c,
                     label="N = %d (%d seeds)" % (N, len(idx)))
-            ax.fill_between(1e3*t[:n], y.min(axis=0), y.max(axis=0),
+            ax.fill_between(1e3*t, y.min(axis=0), y.max(axis=0),
                             color="C%d" % c, alpha=0.2)
         ax.axvline(1e3*a.t1, color="0.5", ls=":", lw=1)
         ax.axvline(1e3*(a.t1 + a.ramp), color="0.5", ls=":", lw=1)
@@ -170,6 +177,10 @@ def main():
     ax.set_title("The trade curve: error against speed-up", fontsize=9)
     if any(drawn):
         ax.legend(fontsize=7)
+    elif 1 not in Ns:
+        ax.text(0.5, 0.5, "no N = 1 run among these: the errors are\n"
+                "against N = 1 (run it into the same cases)",
+                ha="center", va="center", transform=ax.transAxes)
     else:
         ax.text(0.5, 0.5, "no measure with a non-zero mean at N = 1\n"
                 "(no API detached or emitted in this window?)",
