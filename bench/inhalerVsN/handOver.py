@@ -15,12 +15,14 @@ Motion: U and omega; --still carrier,API sets them to zero for the types
 named (typeId 0 carrier, 1 API), the bed at rest where it lies.
 
   handOver.py CASE --time T [--reset cc,cw,...] [--still carrier,API]
+  handOver.py --check [--reset ...] [--still ...]
 
 prints one line per kind of contact (contacts, mean and largest |xi|) and
 per type (mean |U| and |omega|); --reset rewrites
 CASE/T/lagrangian/dpiCloud/contactKeys and contactXi without the kinds
 named, --still its U and omega (the case is edited in place: give it a
-copy).
+copy). --check only checks the kinds and types named (handOver does, before
+it copies any case: the names are listed here alone).
 """
 
 import argparse
@@ -58,8 +60,10 @@ def kinds(typeId, globalId, keys):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("case")
-    ap.add_argument("--time", required=True)
+    ap.add_argument("case", nargs="?")
+    ap.add_argument("--time")
+    ap.add_argument("--check", action="store_true",
+                    help="check --reset and --still, touch no case")
     ap.add_argument("--reset", default="",
                     help="kinds to reset, comma-separated (%s)" % ",".join(KINDS))
     ap.add_argument("--still", default="",
@@ -73,6 +77,10 @@ def main():
         if bad:
             sys.exit("handOver.py: unknown %s(s) %s; valid: %s"
                      % (what, ",".join(bad), ", ".join(valid)))
+    if a.check:
+        return
+    if not a.case or not a.time:
+        ap.error("CASE and --time are needed (or --check)")
     d = fl.cloud_dir(a.case, a.time)
     typeId = fl.read_field(os.path.join(d, "typeId"))
     globalId = fl.read_field(os.path.join(d, "globalId"))
