@@ -21,6 +21,8 @@ and per GROUP the mean over its cases:
              coatingCoverage's contact distance (sqrt(N) primary
              diameters; one diameter at N = 1)
   moving     the carriers' mean speed [mm/s] (still settling, or at rest)
+  spin       the carriers' mean |omega| [1/s] (omega R at 35 um: 1000 1/s
+             is 35 mm/s at the surface)
 """
 import argparse
 import os
@@ -38,7 +40,7 @@ AXIS = (0.039, 0.0)
 
 
 def measure(case, time=None):
-    C, A, nA, (UC, _), _ = settledState(case, motion=True, time=time)
+    C, A, nA, (UC, wC), _ = settledState(case, motion=True, time=time)
     rc, ra = powder.DC/2, powder.DA/2
     D = np.linalg.norm(C[:, None] - C[None], axis=2)
     bare = int(np.sum(np.triu(D < 2*rc + 1e-7, 1)))
@@ -56,7 +58,8 @@ def measure(case, time=None):
         touching=np.mean(np.any(
             dAA < (np.sqrt(nA[:, None]) + np.sqrt(nA[None]))*ra*(1 + 2e-3),
             axis=1)),
-        moving=1e3*np.mean(np.linalg.norm(UC, axis=1)))
+        moving=1e3*np.mean(np.linalg.norm(UC, axis=1)),
+        spin=np.mean(np.linalg.norm(wC, axis=1)))
 
 
 def main():
@@ -66,13 +69,13 @@ def main():
     ap.add_argument("--md", default="settled.md")
     a = ap.parse_args()
     keys = ["height", "spread", "bare", "nearAPI", "wedged", "touching",
-            "moving"]
+            "moving", "spin"]
     out = ["# The settled beds (`settled.py`)", "",
            "| group | cases | carriers' height [um] | distance from the "
            "axis [um] | bare carrier pairs | API within 10 um of another "
            "carrier | API wedged | parcels touching a parcel | carriers' speed "
-           "[mm/s] |",
-           "|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
+           "[mm/s] | carriers' spin [1/s] |",
+           "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for g in a.groups:
         name, _, cases = g.partition("=")
         cases, _, time = cases.partition("@")
@@ -81,10 +84,10 @@ def main():
         rows = [measure(c, time or None) for c in cases.split(",")]
         m = {k: np.mean([r[k] for r in rows]) for k in keys}
         out.append("| %s | %d | %.1f | %.1f | %.1f | %.3f | %.3f | %.3f "
-                   "| %.1f |" % (
+                   "| %.1f | %.0f |" % (
                        name, len(rows), m["height"], m["spread"], m["bare"],
                        m["nearAPI"], m["wedged"], m["touching"],
-                       m["moving"]))
+                       m["moving"], m["spin"]))
     with open(a.md, "w") as f:
         f.write("\n".join(out) + "\n")
     print("\n".join(out))
