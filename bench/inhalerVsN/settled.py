@@ -67,10 +67,12 @@ def main():
                                  formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("groups", nargs="+", metavar="GROUP=CASE[,CASE...][@TIME]")
     ap.add_argument("--md", default="settled.md")
+    ap.add_argument("--title", default="The settled beds (`settled.py`)",
+                    help="the Markdown table's heading")
     a = ap.parse_args()
     keys = ["height", "spread", "bare", "nearAPI", "wedged", "touching",
             "moving", "spin"]
-    out = ["# The settled beds (`settled.py`)", "",
+    out = ["# " + a.title, "",
            "| group | cases | carriers' height [um] | distance from the "
            "axis [um] | bare carrier pairs | API within 10 um of another "
            "carrier | API wedged | parcels touching a parcel | carriers' speed "
