@@ -79,14 +79,22 @@ def dpiFoamLog(path):
     return out
 
 
+# The log's per-patch counter of a patch parcels leave the domain through:
+# the inhaler's exit region (exitEnd, exitSides), or a tube's outlet
+OPEN_PATCH = re.compile(r"Patch (outlet|exit\w*): escaped parcels \d+ "
+                        r"\(primaries (\d+)\)")
+
+
 def apiHistory(path):
     """Per fluid step of a dpiFoam log (the cloud's "API primaries" line):
     time, API primaries attached to carriers and detached, primaries out of
-    the outlet patch (every type, carriers included: the log's counter) and
+    the open patches (OPEN_PATCH: the inhaler's exit region, or an outlet;
+    every type, carriers included: the log's counters, summed) and
     primaries of type carrier in the system; and the last ExecutionTime.
     Arrays keyed t, attached, detached, escaped, carriers; "cpu"."""
     rows = []
     now, escNow, carNow = None, 0, 0
+    escByPatch = {}
     exe = 0.0
     with open(path) as f:
         for line in f:
@@ -99,8 +107,10 @@ def apiHistory(path):
                               line)
                 rows.append([now, int(m.group(1)), int(m.group(2)), escNow,
                              carNow])
-            elif "Patch outlet: escaped parcels" in line:
-                escNow = int(re.search(r"\(primaries (\d+)\)", line).group(1))
+            elif OPEN_PATCH.search(line):
+                m = OPEN_PATCH.search(line)
+                escByPatch[m.group(1)] = int(m.group(2))
+                escNow = sum(escByPatch.values())
                 if rows:
                     rows[-1][3] = escNow
             elif line.startswith("ExecutionTime = "):

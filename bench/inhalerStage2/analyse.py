@@ -34,9 +34,13 @@ def run(d):
                    r" \(singlets (\d+)\)", log)
     a, det, sing = (int(x) for x in m[-1])
     out["apiAttachedEnd"] = a/(a + det)
-    m = re.findall(r"Patch outlet: escaped parcels (\d+) \(primaries " + FLOAT
-                   + r"\)", log)
-    out["outletPrimaries"] = float(m[-1][1]) if m else 0.0
+    # the open patches' counters (the exit region's two, or an outlet) at
+    # the last step that reports them
+    esc = {}
+    for name, prim in re.findall(r"Patch (outlet|exit\w*): escaped parcels"
+                                 r" \d+ \(primaries " + FLOAT + r"\)", log):
+        esc[name] = float(prim)
+    out["outletPrimaries"] = sum(esc.values())
     out["apiPrimaries"] = a + det + out["outletPrimaries"]
     m = re.findall(r"accumulated over (\d+) samples: FPF_box " + FLOAT
                    + r", FPF_system " + FLOAT, log)

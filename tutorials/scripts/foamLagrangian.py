@@ -149,6 +149,22 @@ def write_nested_field(path, rows, vectors=False):
     _rewrite_list(path, lines + [")"])
 
 
+def read_internal_field(path):
+    """The internalField of an ASCII volField (a gas field written by the
+    solver, or the cell centres C of postProcess -func writeCellCentres) as
+    a numpy array ((nCells,) or (nCells, 3)); None for a uniform field,
+    which carries no cell count."""
+    with open(path) as f:
+        _, body = split_header(f.read())
+    m = re.search(r"internalField\s+(uniform|nonuniform)", body)
+    if not m:
+        raise ValueError("%s: no internalField" % path)
+    if m.group(1) == "uniform":
+        return None
+    rest = re.sub(r"^\s*List<\w+>", "", body[m.end():])
+    return _parse_body(rest)
+
+
 def cloud_dir(case, time, cloud="dpiCloud"):
     return os.path.join(case, time, "lagrangian", cloud)
 

@@ -146,4 +146,21 @@ for N in [10, 100]:
           "N = %d: written UTrans (z, last step) = %.4e = %.4f N x primary"
           % (N, uN, uN/(N*u1)))
 
+# Gas-free zone: no force but gravity (the traced force is the weight),
+# so velocity Verlet integrates the fall exactly, v_z = -g (t - t0) from
+# rest at the injection t0 (round-off: measured 5e-13 of g t, bound 1e-9),
+# with no buoyancy (the pressure gradient is a gas force)
+# and no momentum to the gas (exactly zero)
+for run in ["gasFree_held", "gasFree_subStep"]:
+    t, z, vz, fz = trace(run)
+    t0 = t[0] - (-vz[0])/g
+    dv = np.max(np.abs(vz + g*(t - t0)))/(g*(t[-1] - t0))
+    gm = np.abs(gasMomentum(run)).max()
+    mg = rhop*np.pi/6*d**3*g
+    df = np.max(np.abs(fz + mg))/mg
+    check(dv < 1e-9 and df < 1e-12 and gm == 0,
+          "%s: free fall in the gas-free zone (max |v_z + g t|/(g t) %.1e, "
+          "force = weight to %.1e, max |momentum to the gas| %.1e)"
+          % (run, dv, df, gm))
+
 sys.exit(1 if failed else 0)

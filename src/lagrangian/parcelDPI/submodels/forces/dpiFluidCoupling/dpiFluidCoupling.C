@@ -131,6 +131,47 @@ void Foam::dpiFluidCoupling::checkTimeStep(const demMaterials& mat) const
 }
 
 
+void Foam::dpiFluidCoupling::readGasFreeZones()
+{
+    if (!dict_.found("gasFreeZones"))
+    {
+        return;
+    }
+    const wordList names(dict_.get<wordList>("gasFreeZones"));
+    const cellZoneMesh& zones = mesh_.cellZones();
+
+    gasFreeCell_.setSize(mesh_.nCells(), false);
+    label nCells = 0;
+    for (const word& name : names)
+    {
+        // Zone names are the same on every processor (decomposePar keeps
+        // empty zones), so the check is collective-free and the same
+        // everywhere
+        const label zonei = zones.findZoneID(name);
+        if (zonei < 0)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "fluidCoupling/gasFreeZones in " << dict_.name()
+                << " names " << name << ", which is not a cellZone of the"
+                << " mesh. The mesh's cellZones: " << zones.names() << nl
+                << "    Name cellZones (blockMesh: a zone name in the"
+                << " block's hex entry; topoSet: a cellZoneSet), or remove"
+                << " gasFreeZones" << exit(FatalIOError);
+        }
+        for (const label celli : zones[zonei])
+        {
+            if (!gasFreeCell_[celli])
+            {
+                gasFreeCell_[celli] = true;
+                ++nCells;
+            }
+        }
+    }
+    Info<< "Fluid coupling: no gas force in the cellZones " << names
+        << " (" << returnReduce(nCells, sumOp<label>()) << " cells)" << endl;
+}
+
+
 void Foam::dpiFluidCoupling::setForces(demState& s)
 {
     for (label i = 0; i < nRows_; ++i)
@@ -174,7 +215,7 @@ void Foam::dpiFluidCoupling::packStates
 ) const
 {
     vec.setSize(3);
-    sca.setSize(5);
+    sca.setSize(6);
     for (vectorField& c : vec)
     {
         c.setSize(nRows_);
@@ -197,6 +238,7 @@ void Foam::dpiFluidCoupling::packStates
             sca[3][i] = sgs_[i].k;
             sca[4][i] = sgs_[i].tau;
         }
+        sca[5][i] = fl.gasFree ? 1 : 0;
     }
 }
 
@@ -258,6 +300,7 @@ Foam::dpiFluidCoupling::dpiFluidCoupling
 :
     mesh_(mesh),
     dict_(cloudDict.subOrEmptyDict("fluidCoupling")),
+    gasFreeCell_(),
     fluidOn_(fluidPresent(mesh, U)),
     update_
     (
@@ -299,7 +342,8 @@ Foam::dpiFluidCoupling::dpiFluidCoupling
         dict_,
         {
             "dragUpdate", "refreshInterval", "interpolation", "forces",
-            "voidFraction", "turbulentDispersion", "alpha", "p"
+            "voidFraction", "turbulentDispersion", "alpha", "p",
+            "gasFreeZones"
         }
     );
 
@@ -307,11 +351,16 @@ Foam::dpiFluidCoupling::dpiFluidCoupling
     const wordList names(forcesDict.toc());
     const bool wantVoidFraction = dict_.found("voidFraction");
     const bool wantDispersion = dict_.found("turbulentDispersion");
+    const bool wantGasFree = dict_.found("gasFreeZones");
 
-    if (!fluidOn_ && (wantVoidFraction || wantDispersion))
+    if (!fluidOn_ && (wantVoidFraction || wantDispersion || wantGasFree))
     {
         FatalIOErrorInFunction(dict_)
-            << (wantVoidFraction ? "voidFraction" : "turbulentDispersion")
+            << (
+                   wantVoidFraction ? "voidFraction"
+                 : wantDispersion ? "turbulentDispersion"
+                 : "gasFreeZones"
+               )
             << " is named in " << dict_.name() << ", but the case has no"
             << " gas (constant/couplingProperties: fluid none)." << nl
             << "    Set fluid incompressible, or remove it."
@@ -322,6 +371,8 @@ Foam::dpiFluidCoupling::dpiFluidCoupling
     {
         voidFraction_ = dpiVoidFraction::New(dict_.subDict("voidFraction"));
     }
+
+    readGasFreeZones();
 
     if (names.empty())
     {

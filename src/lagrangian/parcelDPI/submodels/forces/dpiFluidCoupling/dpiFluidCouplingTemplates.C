@@ -114,6 +114,7 @@ void Foam::dpiFluidCoupling::sample(const CloudType& cloud, const demState& s)
                 fl.nu
             );
         }
+        fl.gasFree = !gasFreeCell_.empty() && gasFreeCell_[celli];
         fl.gradp = Zero;
         if (gradpInterp.valid())
         {

@@ -73,6 +73,10 @@ void Foam::dpiFluidForce::sum
     F = Zero;
     Fc = Zero;
     Spc = 0;
+    if (fl.gasFree)
+    {
+        return;
+    }
 
     forAll(forces, k)
     {
@@ -107,6 +111,10 @@ void Foam::dpiFluidForce::linearise
     Sp = 0;
     SuC = Zero;
     SpC = 0;
+    if (fl.gasFree)
+    {
+        return;
+    }
 
     forAll(forces, k)
     {

@@ -53,6 +53,7 @@ Foam::dpiSubStepForces::dpiSubStepForces
         fl.nu = scaIn[2][i];
         sgs_[i].k = scaIn[3][i];
         sgs_[i].tau = scaIn[4][i];
+        fl.gasFree = (scaIn[5][i] > 0.5);
     }
 
     // u* held over at most a tenth of its time scale (see the header)
