@@ -359,7 +359,7 @@ TEST(coarseGraining, grownOverlapRefusedAtStart)
 
     for (const bool grown : {false, true})
     {
-        demEngine engine(toDict(engineText(10, grown ? coverage : "")));
+        demEngine engine(toDict(engineText(10, grown ? coverage : "coarseGraining scaledContacts;")));
         demState s;
         s.append(Zero, Zero, Zero, rApi, massOf(rApi), 10, 1, 0);
         s.append(point(2*rApi + 2e-6, 0, 0), Zero, Zero, rApi, massOf(rApi),
@@ -391,7 +391,7 @@ TEST(coarseGraining, regionPackingKeepsGrownRadiiApart)
     {
         const demMaterials mat
         (
-            toDict(engineText(10, grown ? coverage : "")), false
+            toDict(engineText(10, grown ? coverage : "coarseGraining scaledContacts;")), false
         );
         autoPtr<dpiInjectionModel> m = dpiInjectionModel::New
         (

@@ -59,7 +59,10 @@ std::string deck
         << "normalModel hertzParcel;\n"
         << "tangentialModel historyParcel;\n"
         << "rollingModel none;\n"
-        << "cohesionModel none;\n";
+        << "cohesionModel none;\n"
+        // the reference scaling, whose pair contacts are the primaries'
+        // exactly (the grown contacts of the default: coarseGrainingTest)
+        << "coarseGraining scaledContacts;\n";
     if (wall)
     {
         os  << "walls { floor { type plane; point (0 0 0); normal (0 0 1);"

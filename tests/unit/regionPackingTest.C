@@ -50,6 +50,9 @@ const std::string materialsText
     "  wall { youngsModulus 5e8; poissonsRatio 0.35; }"
     "}"
     "pairs { default { restitution 0.85; friction 0.45; } }"
+    // API parcels packed at their primary radii (the reference scaling);
+    // the default's grown radii: coarseGraining.regionPackingKeepsGrownRadiiApart
+    "coarseGraining scaledContacts;"
 );
 
 // A point as dictionary text, to 17 digits

@@ -5,8 +5,8 @@ the mid-plane y = 0 (colour 0 to --uMax, the guide's 0-1000 cm/s) and the
 particles on top of it, coloured by radius (the guide's 2.5e-4 to 3.5e-3
 cm: blue API, red carriers).
 
-    deviceView.py CASE --times 0.05 0.07 0.09 [--labels 0 0.02 0.04]
-                  [--uMax 10] [--box X0 Z0 X1 Z1] [--output fig18.png]
+    deviceView.py CASE --times 0.05 0.07 0.09 [--since 0.05] [--labels ...]
+                  [--uMax 10] [--box 'X0 Z0 X1 Z1'] [--output fig18.png]
                   [--title T]
 
 x increases to the left, as the guide's views: the inlet leg on the left,
@@ -35,14 +35,26 @@ ap.add_argument("--times", nargs="+", required=True,
                 help="time directory names")
 ap.add_argument("--labels", nargs="+",
                 help="panel titles (default: t = the times)")
+ap.add_argument("--since", type=float,
+                help="a stage's start: the titles also give the time since")
 ap.add_argument("--uMax", type=float, default=10.0,
                 help="upper end of the gas speed's colour range [m/s]")
 ap.add_argument("--field", default="U.air", help="gas velocity field")
-ap.add_argument("--box", nargs=4, type=float, metavar=("X0", "Z0", "X1", "Z1"),
-                help="a sampling box to outline (dashed) [m], e.g. the FPF box")
+ap.add_argument("--box", metavar="'X0 Z0 X1 Z1'",
+                help="a sampling box to outline (dashed), its corners in the "
+                     "view [m] in one argument, e.g. '-5e-3 -3.5e-3 0 3.5e-3'")
 ap.add_argument("--output", default="deviceView.png")
 ap.add_argument("--title", default="Gas speed and particles, side view")
 a = ap.parse_args()
+box = None
+if a.box:
+    try:
+        box = [float(v) for v in a.box.split()]
+    except ValueError:
+        box = []
+    if len(box) != 4:
+        sys.exit("deviceView.py: --box needs four numbers in one argument, "
+                 "got '%s'" % a.box)
 if a.labels and len(a.labels) != len(a.times):
     sys.exit("deviceView.py: %d --labels for %d --times"
              % (len(a.labels), len(a.times)))
@@ -90,6 +102,8 @@ for k, t in enumerate(a.times):
     cs = pnl.tripcolor(tri, speed, cmap="coolwarm", vmin=0, vmax=a.uMax,
                        shading="gouraud")
     label = a.labels[k] if a.labels else "t = %s s" % t
+    if a.since is not None:
+        label += ", %.4g s into the stage" % (float(t) - a.since)
     if os.path.isdir(fl.cloud_dir(a.case, t)):
         c = fl.read_cloud(a.case, t, fields=("xDEM", "d"))
         x = 1e3*c["xDEM"]
@@ -102,8 +116,8 @@ for k, t in enumerate(a.times):
         label += " (%d parcels)" % len(x)
     else:
         label += " (no cloud)"
-    if a.box:
-        x0, z0, x1, z1 = (1e3*v for v in a.box)
+    if box:
+        x0, z0, x1, z1 = (1e3*v for v in box)
         pnl.plot([x0, x1, x1, x0, x0], [z0, z0, z1, z1, z0], "k--", lw=0.8)
     pnl.set_xlim(1e3*C[:, 0].max() + 0.5, 1e3*C[:, 0].min() - 0.5)
     pnl.set_aspect("equal")
