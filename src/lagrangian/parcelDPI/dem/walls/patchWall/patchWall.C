@@ -36,8 +36,8 @@ Foam::labelList Foam::demWalls::patchWall::globalPatches
     const wordReList& patchNames
 )
 {
-    // Processor patches come after the global ones, which are the same on
-    // every processor (and in serial), so the selection is too
+    // The global patches are the same on every processor and in serial:
+    // without the processor patches, so is the selection
     labelList ids(pbm.patchSet(patchNames, false, true).sortedToc());
     label n = 0;
     for (const label patchi : ids)
