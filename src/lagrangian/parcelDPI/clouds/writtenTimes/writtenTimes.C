@@ -174,12 +174,10 @@ void Foam::writtenTimes::checkStartWritten(const fileName& casePath)
     // state, and writes its own times among the old run's: refused
     DynamicList<word> runTimes;
     word before;
+    bool found = false;     // written: checkStart looks at it
     for (const instant& t : times(casePath))
     {
-        if (t.equal(startTime))
-        {
-            return;     // written: checkStart looks at it
-        }
+        found = found || t.equal(startTime);
         const fileName dir(casePath/t.name()/"uniform");
         if (isFile(dir/"time") || isFile(dir/"time.gz"))
         {
@@ -191,13 +189,15 @@ void Foam::writtenTimes::checkStartWritten(const fileName& casePath)
         }
     }
 
-    // Processor directories hold the same times: the master's decision
+    // Processor directories hold the same times: the master's decision,
+    // taken by all (no processor leaves before the others)
     wordList written(std::move(runTimes));
+    Pstream::scatter(found);
     Pstream::scatter(before);
     Pstream::scatter(written);
-    if (before.empty())
+    if (found || before.empty())
     {
-        return;     // a fresh start: no run wrote a time before it
+        return;     // written, or a fresh start: no run wrote before it
     }
     if (!Pstream::master())
     {

@@ -11,7 +11,8 @@ Description
     parcels came together at a finite speed; a start inside another parcel
     or a wall releases the stored elastic energy at once (two API parcels
     overlapping by half a radius fly apart at ~50 m/s), and coincident
-    centres have no contact normal at all (0/0 in the pair force).
+    centres have no contact normal at all (0/0 in the pair force): those
+    are refused whatever dem/startOverlap/refuse allows.
 
 \*---------------------------------------------------------------------------*/
 

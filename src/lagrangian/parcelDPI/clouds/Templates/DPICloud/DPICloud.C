@@ -353,7 +353,11 @@ void Foam::DPICloud<CloudType>::checkInjectorBounds
     forAll(injectors_, i)
     {
         const boundBox bb(injectors_[i].bounds());
-        if (bb.valid() && !(grown.contains(bb.min()) && grown.contains(bb.max())))
+        if
+        (
+            bb.valid()
+         && !(grown.contains(bb.min()) && grown.contains(bb.max()))
+        )
         {
             FatalIOErrorInFunction(injDict.subDict(injectors_[i].name()))
                 << "Injector " << injectors_[i].name() << " in "
@@ -742,11 +746,14 @@ Foam::label Foam::DPICloud<CloudType>::inject
         const label typei = mat.typeIndex(specs[i].type, injDict, "type");
         if (!mat.isParticleType(typei))
         {
+            const fileName typeDict
+            (
+                injDict.parent().name() + ".dem.types." + specs[i].type
+            );
             FatalIOErrorInFunction(injDict)
                 << "Injected type " << specs[i].type << " has no 'diameter'"
-                << " in dictionary "
-                << (injDict.parent().name() + ".dem.types." + specs[i].type).c_str() << ": a type without"
-                << " one is a wall material." << nl
+                << " in dictionary " << typeDict.c_str() << ": a type"
+                << " without one is a wall material." << nl
                 << "    Give type " << specs[i].type << " a diameter and a"
                 << " density to inject it" << exit(FatalIOError);
         }
