@@ -41,6 +41,8 @@ Description
 #include "uniformDimensionedFields.H"
 #include "Enum.H"
 #include "writtenTimes.H"
+#include "runStartCheck.H"
+#include "dictKeys.H"
 #ifdef __GLIBC__
 #include <malloc.h>
 #endif
@@ -119,9 +121,18 @@ int main(int argc, char *argv[])
     writtenTimes::checkStart(args);
 
     #include "createTime.H"
+    // Where OpenFOAM would loop for ever or run on silently: refused
+    // before anything is read
+    runStartCheck::timeControls(runTime);
     #include "createMesh.H"
     #include "checkDecomposition.H"
+    runStartCheck::meshDimensions(mesh);
     #include "readGravitationalAcceleration.H"
+
+    // dpiFoam's own input: a key given twice (the second silently merged
+    // or kept) is refused, naming it
+    const fileName constantDir(runTime.globalPath()/runTime.constant());
+    dictKeys::refuseDuplicates(constantDir/"couplingProperties");
 
     IOdictionary couplingProperties
     (
@@ -141,6 +152,8 @@ int main(int argc, char *argv[])
     );
 
     Info<< "Fluid: " << fluidTypeNames[fluid] << nl << endl;
+
+    dictKeys::refuseDuplicates(constantDir/(cloudName + "Properties"));
 
     autoPtr<incompressibleGas> gas;
     tmp<volScalarField> rhoStill;

@@ -107,21 +107,31 @@ Foam::instantList Foam::writtenTimes::times(const fileName& casePath)
 }
 
 
-Foam::word Foam::writtenTimes::startTimeName(const fileName& casePath)
+Foam::dictionary Foam::writtenTimes::controlDict(const fileName& casePath)
 {
     // The global case's controlDict (a processor case has none of its own)
-    const fileName controlDict
+    const fileName path
     (
         (Pstream::parRun() ? casePath.path() : casePath)/"system/controlDict"
     );
+    if (!isFile(path))
+    {
+        return dictionary();    // Time says what is wrong
+    }
+    IFstream is(path);
+    return dictionary(is);
+}
+
+
+Foam::word Foam::writtenTimes::startTimeName(const fileName& casePath)
+{
+    const dictionary dict(controlDict(casePath));
     const instantList ts(times(casePath));
-    if (!isFile(controlDict) || ts.empty())
+    if (dict.empty() || ts.empty())
     {
         return word::null;      // nothing to check: Time says what is wrong
     }
 
-    IFstream is(controlDict);
-    const dictionary dict(is);
     const word startFrom(dict.getOrDefault<word>("startFrom", "startTime"));
 
     if (startFrom == "latestTime")
@@ -142,6 +152,72 @@ Foam::word Foam::writtenTimes::startTimeName(const fileName& casePath)
         }
     }
     return word::null;
+}
+
+
+void Foam::writtenTimes::checkStartWritten(const fileName& casePath)
+{
+    const dictionary dict(controlDict(casePath));
+    if
+    (
+        dict.empty()
+     || dict.getOrDefault<word>("startFrom", "startTime") != "startTime"
+    )
+    {
+        return;     // latestTime, firstTime: a written time (or none)
+    }
+    const scalar startTime = dict.getOrDefault<scalar>("startTime", 0);
+
+    // The times a run wrote (Time writes uniform/time with each), and the
+    // latest of them before the start. A start time that was never
+    // written, after such a time, starts with no parcels and no cloud
+    // state, and writes its own times among the old run's: refused
+    DynamicList<word> runTimes;
+    word before;
+    bool found = false;     // written: checkStart looks at it
+    for (const instant& t : times(casePath))
+    {
+        found = found || t.equal(startTime);
+        const fileName dir(casePath/t.name()/"uniform");
+        if (isFile(dir/"time") || isFile(dir/"time.gz"))
+        {
+            runTimes.append(t.name());
+            if (t.value() < startTime)
+            {
+                before = t.name();
+            }
+        }
+    }
+
+    // Processor directories hold the same times: the master's decision,
+    // taken by all (no processor leaves before the others)
+    wordList written(std::move(runTimes));
+    Pstream::scatter(found);
+    Pstream::scatter(before);
+    Pstream::scatter(written);
+    if (found || before.empty())
+    {
+        return;     // written, or a fresh start: no run wrote before it
+    }
+    if (!Pstream::master())
+    {
+        Pstream::exit(1);
+    }
+    FatalIOErrorInFunction(dict)
+        << "startTime " << startTime << " in " << dict.name() << " is not a"
+        << " written time of this case (startFrom startTime): the run would"
+        << " start with no parcels and no cloud state, after the times a"
+        << " run wrote up to " << written.last() << "." << nl
+        << "    Set startTime to a written time (the latest before "
+        << startTime << " is " << before << "; written:";
+    for (const word& t : written)
+    {
+        FatalIOError<< ' ' << t;
+    }
+    FatalIOError
+        << ") or startFrom latestTime; to start"
+        << " again from the initial conditions, remove the written times"
+        << " first." << exit(FatalIOError);
 }
 
 
@@ -259,6 +335,7 @@ Foam::word Foam::writtenTimes::lastComplete
 void Foam::writtenTimes::checkStart(const argList& args)
 {
     const fileName casePath(args.path());
+    checkStartWritten(casePath);
     const word start(startTimeName(casePath));
 
     stringList problems;

@@ -69,6 +69,25 @@ Foam::scalar Foam::demEngine::readSkin(const dictionary& dict) const
     // Default: the smallest particle diameter
     const dictionary nsDict(dict.subOrEmptyDict("neighbourSearch"));
     dictKeys::warnUnknown(nsDict, {"skin", "order"});
+
+    // No type with a diameter: the parcels' types were given none (a type
+    // without one is a wall material), which is what to say, not the skin
+    bool anyParticleType = false;
+    forAll(materials_.names(), t)
+    {
+        anyParticleType = anyParticleType || materials_.isParticleType(t);
+    }
+    if (!anyParticleType)
+    {
+        const dictionary& types = dict.subDict("types");
+        FatalIOErrorInFunction(types)
+            << "No type in dictionary " << types.name() << " has a"
+            << " 'diameter' (types " << flatOutput(materials_.names())
+            << "): a type without one is a wall material, and parcels"
+            << " cannot be made of it." << nl
+            << "    Give the types parcels are made of a diameter and a"
+            << " density" << exit(FatalIOError);
+    }
     const scalar skin =
         nsDict.getOrDefault<scalar>("skin", materials_.minDiameter());
     if (!(skin > 0))

@@ -11,7 +11,8 @@ Description
     parcels came together at a finite speed; a start inside another parcel
     or a wall releases the stored elastic energy at once (two API parcels
     overlapping by half a radius fly apart at ~50 m/s), and coincident
-    centres have no contact normal at all (0/0 in the pair force).
+    centres have no contact normal at all (0/0 in the pair force): those
+    are refused whatever dem/startOverlap/refuse allows.
 
 \*---------------------------------------------------------------------------*/
 
@@ -36,6 +37,10 @@ namespace Foam
         label count = 0;
         //- 1 if a centre lies inside the other sphere (or on the wall)
         label inside = 0;
+        //- A pair of coincident centres (no contact normal): the globalIds,
+        //  -1 if none
+        label sameA = -1;
+        label sameB = -1;
     };
 
     //- A ratio to 3 digits: what the user needs to read
@@ -50,13 +55,14 @@ namespace Foam
     static Ostream& operator<<(Ostream& os, const startOverlap& o)
     {
         return os << o.ratio << ' ' << o.idA << ' ' << o.idB << ' '
-            << o.wall << ' ' << o.count << ' ' << o.inside;
+            << o.wall << ' ' << o.count << ' ' << o.inside << ' '
+            << o.sameA << ' ' << o.sameB;
     }
 
     static Istream& operator>>(Istream& is, startOverlap& o)
     {
         return is >> o.ratio >> o.idA >> o.idB >> o.wall >> o.count
-            >> o.inside;
+            >> o.inside >> o.sameA >> o.sameB;
     }
 }
 
@@ -140,6 +146,14 @@ void Foam::demEngine::checkStartState(const demState& s, const word& when)
                 {
                     continue;
                 }
+                // Centres within round-off of each other: the pair force
+                // divides by the distance (0/0), whatever the overlap
+                // allowed
+                if (dist <= 1e-9*rSum && worst.sameA < 0)
+                {
+                    worst.sameA = s.globalId[i];
+                    worst.sameB = s.globalId[j];
+                }
                 const scalar Rstar = s.r[i]*s.r[j]/(s.r[i] + s.r[j]);
                 const scalar ratio = (rSum - dist)/Rstar;
                 if (ratio > overlap_.startWarn())
@@ -197,6 +211,7 @@ void Foam::demEngine::checkStartState(const demState& s, const word& when)
     Pstream::scatterList(all);
     label nOver = 0;
     worst = startOverlap();
+    labelPair same(-1, -1);
     for (const startOverlap& o : all)
     {
         nOver += o.count;
@@ -204,6 +219,24 @@ void Foam::demEngine::checkStartState(const demState& s, const word& when)
         {
             worst = o;
         }
+        if (o.sameA >= 0 && same.first() < 0)
+        {
+            same = labelPair(o.sameA, o.sameB);
+        }
+    }
+
+    // No setting makes coincident centres work: refused, and nothing
+    // advised but moving them apart
+    if (same.first() >= 0)
+    {
+        FatalErrorInFunction
+            << "Parcels " << same.first() << " and " << same.second()
+            << " (" << when << ") have the same centre: a contact between"
+            << " them has no direction, whatever dem/startOverlap/refuse"
+            << " allows." << nl
+            << "    Move or remove one of them (the injectors' positions,"
+            << " or the time directory's lagrangian fields)"
+            << exit(FatalError);
     }
 
     if (worst.ratio <= overlap_.startWarn())

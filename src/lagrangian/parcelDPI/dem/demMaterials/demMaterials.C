@@ -98,7 +98,15 @@ void Foam::demMaterials::readType(const label typei, const dictionary& d)
     N_[typei] = 1;
     if (d.found("N"))
     {
-        N_[typei] = readInRange(d, "N", positive, "> 0 (carriers 1)");
+        // A parcel stands for N >= 1 primaries: below 1 it would stand for
+        // a fraction of a particle (nParticle < 1 in every statistic)
+        N_[typei] = readInRange
+        (
+            d,
+            "N",
+            [](const scalar x) { return x >= 1; },
+            ">= 1 (the primaries a parcel stands for; carriers 1)"
+        );
     }
 
     // Representative parcels stand for N primary API particles; carriers

@@ -8,6 +8,36 @@ License
 
 #include "dictKeys.H"
 #include "labelList.H"
+#include "IFstream.H"
+#include "OSspecific.H"
+#include "stringOps.H"
+#include "DynamicList.H"
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    //- The dictionaries (dict and those below it) that hold key by name
+    static void holders
+    (
+        const dictionary& dict,
+        const word& key,
+        DynamicList<fileName>& found
+    )
+    {
+        if (dict.found(key, keyType::LITERAL))
+        {
+            found.append(dict.name());
+        }
+        for (const entry& e : dict)
+        {
+            if (e.isDict())
+            {
+                holders(e.dict(), key, found);
+            }
+        }
+    }
+}
 
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
 
@@ -141,3 +171,65 @@ Foam::label Foam::dictKeys::warnUnknown
 
 
 // ************************************************************************* //
+
+
+void Foam::dictKeys::refuseDuplicates(const fileName& file)
+{
+    if (!isFile(file))
+    {
+        return;     // its reader says what is missing
+    }
+
+    // OpenFOAM's own duplicate check, thrown rather than fatal so that the
+    // message can say where and what to do
+    const entry::inputMode mode = entry::globalInputMode;
+    const bool throwing = FatalIOError.throwExceptions();
+    entry::globalInputMode = entry::inputMode::ERROR;
+    string key;
+    label line = -1;
+    try
+    {
+        // (read into an empty dictionary: the top-level constructor
+        // resets the input mode to merge)
+        IFstream is(file);
+        dictionary dict;
+        dict.name() = file;
+        dict.read(is);
+    }
+    catch (const IOerror& err)
+    {
+        const string message(err.message());
+        const string tag("duplicate entry: ");
+        const auto pos = message.find(tag);
+        if (pos != string::npos)
+        {
+            key = stringOps::trim(message.substr(pos + tag.size()));
+            line = err.ioStartLineNumber();
+        }
+    }
+    entry::globalInputMode = mode;
+    FatalIOError.throwExceptions(throwing);
+
+    if (key.empty())
+    {
+        return;
+    }
+
+    IFstream is(file);
+    const dictionary dict(is);
+    DynamicList<fileName> found;
+    holders(dict, word(key, false), found);
+
+    FatalIOErrorInFunction(dict)
+        << "Key '" << key.c_str() << "' is given twice in dictionary ";
+    forAll(found, i)
+    {
+        FatalIOError<< (i ? " or " : "") << found[i];
+    }
+    FatalIOError
+        << " (the second at line " << line << " of " << file << "):"
+        << " OpenFOAM would keep only one of them without a word (a second"
+        << " block merged into the first, a second value replacing it)."
+        << nl << "    Remove one of them, or give it a name of its own"
+        << exit(FatalIOError);
+}

@@ -10,6 +10,8 @@ License
 #include "dictKeys.H"
 #include "demState.H"
 #include "OSspecific.H"
+#include "HashSet.H"
+#include "PstreamCombineReduceOps.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -40,6 +42,8 @@ Foam::demTrace::demTrace(const dictionary& dict, const fileName& dir)
 :
     dir_(dir),
     ids_(dict.get<labelList>("parcels")),
+    dictName_(dict.name()),
+    warned_(ids_.size(), 0),
     rows_(ids_.size(), -1),
     files_(ids_.size()),
     t0_(0),
@@ -58,6 +62,39 @@ void Foam::demTrace::beginStep(const scalar t0, const scalar dt)
     t0_ = t0;
     dt_ = dt;
     k_ = 0;
+}
+
+
+void Foam::demTrace::warnAbsent
+(
+    const labelUList& globalIds,
+    const label nIssued,
+    const word& timeName
+)
+{
+    labelList present(ids_.size(), 0);
+    const labelHashSet here(globalIds);
+    forAll(ids_, i)
+    {
+        present[i] = here.found(ids_[i]);
+    }
+    Pstream::listCombineGather(present, maxEqOp<label>());
+    Pstream::listCombineScatter(present);
+
+    forAll(ids_, i)
+    {
+        if (present[i] || warned_[i])
+        {
+            continue;
+        }
+        warned_[i] = 1;
+        WarningInFunction
+            << "Entry 'parcels' of " << dictName_ << " names parcel "
+            << ids_[i] << ", but no parcel carries that globalId at time "
+            << timeName << " (" << nIssued << " ids issued: 0 to "
+            << nIssued - 1 << "): nothing is traced for it unless a parcel"
+            << " with that id is injected later" << endl;
+    }
 }
 
 

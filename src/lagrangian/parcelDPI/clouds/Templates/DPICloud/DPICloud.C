@@ -15,6 +15,8 @@ License
 #include "clockTime.H"
 #include "dictKeys.H"
 #include "mortonOrder.H"
+#include "stringOps.H"
+#include "OSspecific.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -163,6 +165,7 @@ void Foam::DPICloud<CloudType>::setModels()
                 dpiInjectionModel::New(names[i], injDict.subDict(names[i]), &engine_->materials())
             );
         }
+        checkInjectorBounds(injDict);
     }
 
     if (props.found("trace"))
@@ -246,6 +249,126 @@ void Foam::DPICloud<CloudType>::setModels()
     escapedParcels_.setSize(nPatches, 0);
     escapedPrimaries_.setSize(nPatches, 0);
     lostParcels_.setSize(nPatches, 0);
+}
+
+
+template<class CloudType>
+void Foam::DPICloud<CloudType>::readCloudFields()
+{
+    // A missing field file is OpenFOAM's bare "cannot find file" (a
+    // FatalError): caught to say how such a time comes about and what to
+    // run. Any other error goes on as OpenFOAM reports it
+    const bool throwing = FatalError.throwExceptions();
+    const bool ioThrowing = FatalIOError.throwExceptions();
+    auto restore = [&]()
+    {
+        FatalError.throwExceptions(throwing);
+        FatalIOError.throwExceptions(ioThrowing);
+    };
+    string missing;
+    try
+    {
+        parcelType::readFields(*this);
+    }
+    catch (const IOerror& err)
+    {
+        restore();
+        IOerror other(err);
+        other.dontThrowExceptions();
+        other.exit();
+    }
+    catch (const error& err)
+    {
+        restore();
+        missing = err.message();
+        if (missing.find("cannot find file") == string::npos)
+        {
+            error other(err);
+            other.dontThrowExceptions();
+            other.exit();
+        }
+    }
+    restore();
+    if (missing.empty())
+    {
+        return;
+    }
+
+    const Time& time = this->db().time();
+    const fileName cloudDir(time.timeName()/cloud::prefix/this->name());
+    const bool decomposedToo =
+        isDir(time.globalPath()/"processor0"/time.timeName());
+    // (collective in parallel, where a processor may stop here alone)
+    const word last
+    (
+        Pstream::parRun()
+      ? word::null
+      : writtenTimes::lastComplete(time.path(), time.value(), this->name())
+    );
+    FatalIOErrorInFunction(time.controlDict())
+        << "The restart time " << time.timeName() << " (startFrom/startTime"
+        << " in " << time.controlDict().name() << ") has the parcels of"
+        << " cloud " << this->name() << " but not all their fields: "
+        << stringOps::trim(missing).c_str() << nl;
+    if (decomposedToo && !Pstream::parRun())
+    {
+        FatalIOError
+            << "    The time was reconstructed from processor0/"
+            << time.timeName() << " ...: reconstructPar without a"
+            << " lagrangian field selection leaves out the contact"
+            << " histories (contactKeys, contactXi). Run reconstructPar"
+            << " -time " << time.timeName() << " -lagrangianFields"
+            << " '(\".*\")', or restart in parallel from the processor"
+            << " directories";
+    }
+    else
+    {
+        FatalIOError
+            << "    The cloud's files in " << cloudDir << " were deleted or"
+            << " not copied (every field a run writes is needed)";
+        if (last.size())
+        {
+            FatalIOError
+                << "; restore them, or restart from " << last
+                << " (startFrom startTime; startTime " << last << ";)";
+        }
+    }
+    FatalIOError<< exit(FatalIOError);
+}
+
+
+template<class CloudType>
+void Foam::DPICloud<CloudType>::checkInjectorBounds
+(
+    const dictionary& injDict
+) const
+{
+    // Before any packing: a region outside the mesh would otherwise be
+    // packed first and fail on what the packing cannot reach, never
+    // naming the mesh (the parcels' own positions are checked against the
+    // mesh's cells when injected)
+    const boundBox& meshBb = this->mesh().bounds();
+    boundBox grown(meshBb);
+    grown.inflate(1e-9);
+    forAll(injectors_, i)
+    {
+        const boundBox bb(injectors_[i].bounds());
+        if
+        (
+            bb.valid()
+         && !(grown.contains(bb.min()) && grown.contains(bb.max()))
+        )
+        {
+            FatalIOErrorInFunction(injDict.subDict(injectors_[i].name()))
+                << "Injector " << injectors_[i].name() << " in "
+                << injDict.name() << " places its particles in "
+                << bb.min() << ' ' << bb.max() << ", outside the mesh"
+                << " (bounds " << meshBb.min() << ' ' << meshBb.max()
+                << ")." << nl << "    Move its positions or region"
+                << " inside the mesh (lengths in metres)"
+                << exit(FatalIOError);
+        }
+    }
 }
 
 
@@ -623,9 +746,16 @@ Foam::label Foam::DPICloud<CloudType>::inject
         const label typei = mat.typeIndex(specs[i].type, injDict, "type");
         if (!mat.isParticleType(typei))
         {
+            const fileName typeDict
+            (
+                injDict.parent().name() + ".dem.types." + specs[i].type
+            );
             FatalIOErrorInFunction(injDict)
-                << "Injected type " << specs[i].type << " has no diameter:"
-                << " it is a wall material in dem/types" << exit(FatalIOError);
+                << "Injected type " << specs[i].type << " has no 'diameter'"
+                << " in dictionary " << typeDict.c_str() << ": a type"
+                << " without one is a wall material." << nl
+                << "    Give type " << specs[i].type << " a diameter and a"
+                << " density to inject it" << exit(FatalIOError);
         }
     }
 
@@ -1055,7 +1185,7 @@ Foam::DPICloud<CloudType>::DPICloud
 
         if (readFields)
         {
-            parcelType::readFields(*this);
+            readCloudFields();
             this->deleteLostParticles();
         }
 
@@ -1362,6 +1492,18 @@ void Foam::DPICloud<CloudType>::motion
     {
         checkWhen = startChecked_ ? "injected" : "at the start";
         startChecked_ = true;
+
+        // A traced id no parcel carries would trace nothing, silently
+        if (trace_.valid())
+        {
+            labelList ids(this->size());
+            label i = 0;
+            for (const parcelType& p : *this)
+            {
+                ids[i++] = p.globalId();
+            }
+            trace_->warnAbsent(ids, nextGlobalId_, time.timeName());
+        }
     }
 
     demObserver* obs = observer_;

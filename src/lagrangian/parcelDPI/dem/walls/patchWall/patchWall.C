@@ -12,6 +12,8 @@ License
 #include "labelIOList.H"
 #include "polyMesh.H"
 #include "wordRes.H"
+#include "processorPolyPatch.H"
+#include "SubList.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -27,6 +29,28 @@ namespace demWalls
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::labelList Foam::demWalls::patchWall::globalPatches
+(
+    const polyBoundaryMesh& pbm,
+    const wordReList& patchNames
+)
+{
+    // The global patches are the same on every processor and in serial:
+    // without the processor patches, so is the selection
+    labelList ids(pbm.patchSet(patchNames, false, true).sortedToc());
+    label n = 0;
+    for (const label patchi : ids)
+    {
+        if (!isA<processorPolyPatch>(pbm[patchi]))
+        {
+            ids[n++] = patchi;
+        }
+    }
+    ids.setSize(n);
+    return ids;
+}
+
 
 void Foam::demWalls::patchWall::checkMesh
 (
@@ -58,21 +82,32 @@ Foam::demWalls::patchWall::surface
     const polyBoundaryMesh& pbm = mesh->boundaryMesh();
     const wordRes patchNames(dict.get<wordRes>("patches"));
 
-    // Every entry must select something: a typo would silently drop a wall
+    // Every entry must select something: a typo would silently drop a wall.
+    // Processor patches are never walls, whatever the pattern: they exist
+    // only in a decomposed run, and a wall must be the same at any
+    // processor count (a parcel would bounce off a sub-domain's border)
     for (const wordRe& pn : patchNames)
     {
-        const labelHashSet one(pbm.patchSet(wordReList(1, pn), false, true));
-        if (one.empty())
+        if (globalPatches(pbm, wordReList(1, pn)).empty())
         {
             FatalIOErrorInFunction(dict)
                 << "Entry '" << pn << "' of 'patches' of wall " << name
                 << " in dictionary " << dict.name()
-                << " matches no patch of the mesh" << nl
-                << "Patches: " << pbm.names() << exit(FatalIOError);
+                << " matches no patch of the mesh (processor patches are"
+                << " never walls)" << nl
+                << "    Patches: "
+                << flatOutput(SubList<word>(pbm.names(), pbm.nNonProcessor()))
+                << exit(FatalIOError);
         }
     }
 
-    const labelHashSet ids(pbm.patchSet(patchNames, false, true));
+    const labelList ids(globalPatches(pbm, patchNames));
+
+    wordList selected(ids.size());
+    forAll(ids, i)
+    {
+        selected[i] = pbm[ids[i]].name();
+    }
 
     // Undecomposed labels of this processor's faces and points (identity
     // in serial)
@@ -119,7 +154,7 @@ Foam::demWalls::patchWall::surface
     DynamicList<label> faceIds;
     DynamicList<face> faces;
     Map<point> coords;
-    for (const label patchi : ids.sortedToc())
+    for (const label patchi : ids)
     {
         const polyPatch& pp = pbm[patchi];
         forAll(pp, i)
@@ -187,6 +222,10 @@ Foam::demWalls::patchWall::surface
             );
         }
     }
+
+    // What the wall is made of: the same lines at any processor count
+    Info<< "    Wall " << name << ": patches " << flatOutput(selected) << ", "
+        << byId.size() << " faces, " << tris.size() << " triangles" << endl;
 
     return Tuple2<pointField, triFaceList>
     (

@@ -52,6 +52,24 @@ Foam::dpiInjectionModel::dpiInjectionModel
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * //
 
+void Foam::dpiInjectionModel::checkDiameter
+(
+    const scalar d,
+    const dictionary& dict,
+    const string& what
+)
+{
+    if (!(d > 0) || !std::isfinite(d))
+    {
+        FatalIOErrorInFunction(dict)
+            << what.c_str() << " = " << d << " in dictionary " << dict.name()
+            << " is out of range: a particle's own diameter must be > 0 [m]"
+            << " (leave it out for its type's diameter)"
+            << exit(FatalIOError);
+    }
+}
+
+
 void Foam::dpiInjectionModel::order
 (
     DynamicList<injectionSpec>& particles,

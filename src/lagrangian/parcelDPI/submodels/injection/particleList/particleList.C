@@ -110,6 +110,15 @@ Foam::dpiInjectionModels::particleList::readParticles
     checkSize(omega.size(), "spins");
     checkSize(d.size(), "diameters");
 
+    forAll(d, i)
+    {
+        checkDiameter
+        (
+            d[i], dict, "diameters[" + Foam::name(i) + "] (file "
+          + dict.get<fileName>("diameters") + ")"
+        );
+    }
+
     List<injectionSpec> particles(x.size());
     forAll(x, i)
     {

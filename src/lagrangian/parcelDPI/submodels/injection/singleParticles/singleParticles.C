@@ -56,7 +56,12 @@ Foam::dpiInjectionModels::singleParticles::singleParticles
         p.U = e.lookupOrDefault<vector>("U", Zero);
         p.omega = e.lookupOrDefault<vector>("omega", Zero);
         p.type = e.get<word>("type");
-        p.d = e.lookupOrDefault<scalar>("d", -1);
+        p.d = -1;
+        if (e.found("d"))
+        {
+            p.d = e.get<scalar>("d");
+            checkDiameter(p.d, e, "Entry 'd'");
+        }
     }
 }
 
@@ -75,6 +80,17 @@ Foam::dpiInjectionModels::singleParticles::singleParticles
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::boundBox Foam::dpiInjectionModels::singleParticles::bounds() const
+{
+    boundBox bb(boundBox::invertedBox);
+    for (const injectionSpec& p : particles_)
+    {
+        bb.add(p.position);
+    }
+    return bb;
+}
+
 
 void Foam::dpiInjectionModels::singleParticles::inject
 (

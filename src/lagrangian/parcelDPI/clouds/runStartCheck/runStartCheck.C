@@ -1,0 +1,127 @@
+/*---------------------------------------------------------------------------*\
+  dpiFoam: CFD-DEM for dry powder inhalers
+-------------------------------------------------------------------------------
+License
+    This file is part of dpiFoam, distributed under the GNU General Public
+    License version 3 or (at your option) any later version; see LICENSE.
+\*---------------------------------------------------------------------------*/
+
+#include "runStartCheck.H"
+#include "emptyPolyPatch.H"
+#include "wedgePolyPatch.H"
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+void Foam::runStartCheck::timeControls(const Time& runTime)
+{
+    const dictionary& control = runTime.controlDict();
+    const scalar t0 = runTime.value();
+    const scalar dt = runTime.deltaTValue();
+
+    // Time only adds deltaT: zero, negative or lost in the start time's
+    // round-off, the loop never reaches endTime
+    if (!(dt > 0) || !std::isfinite(dt) || !(t0 + dt > t0))
+    {
+        FatalIOErrorInFunction(control)
+            << "deltaT " << dt << " in " << control.name() << " does not"
+            << " advance the time from the start time "
+            << runTime.timeName()
+            << ": the run would never reach endTime "
+            << Time::timeName(runTime.endTime().value()) << "." << nl
+            << "    Set deltaT > 0: the fluid step (the coupling interval),"
+            << " a whole number of dem/timeStep" << exit(FatalIOError);
+    }
+
+    // Nothing to do is not an error (a restart at the end), but say so
+    if
+    (
+        runTime.stopAt() == Time::stopAtControls::saEndTime
+     && !(runTime.endTime().value() > t0)
+    )
+    {
+        WarningInFunction
+            << "endTime " << Time::timeName(runTime.endTime().value())
+            << " in " << control.name() << " is not after the start time "
+            << runTime.timeName()
+            << ": the run makes no step" << endl;
+    }
+
+    // Function objects (stock ones too) run between timeStart and timeEnd
+    const dictionary* functions = control.findDict("functions");
+    if (!functions)
+    {
+        return;
+    }
+    const scalar tEnd = runTime.endTime().value();
+    for (const entry& e : *functions)
+    {
+        if (!e.isDict())
+        {
+            continue;
+        }
+        const dictionary& fo = e.dict();
+        const scalar start = fo.getOrDefault<scalar>("timeStart", -VGREAT);
+        const scalar end = fo.getOrDefault<scalar>("timeEnd", VGREAT);
+        if (end < start)
+        {
+            FatalIOErrorInFunction(fo)
+                << "Function object " << e.keyword() << " in "
+                << fo.name() << " has timeEnd " << Time::timeName(end)
+                << " before timeStart " << Time::timeName(start)
+                << ": it would never run and"
+                << " write only its files' headers." << nl
+                << "    Give timeStart <= timeEnd (or leave one out)"
+                << exit(FatalIOError);
+        }
+        if (end < t0 || start > tEnd)
+        {
+            WarningInFunction
+                << "Function object " << e.keyword() << " in " << fo.name()
+                << " runs "
+                << (
+                       end < t0
+                     ? "until timeEnd " + Time::timeName(end) + ", before"
+                     : "from timeStart " + Time::timeName(start) + ", after"
+                   ).c_str()
+                << " this run (" << runTime.timeName() << " to "
+                << Time::timeName(tEnd) << "): it"
+                << " writes nothing" << endl;
+        }
+    }
+}
+
+
+void Foam::runStartCheck::meshDimensions(const polyMesh& mesh)
+{
+    if (mesh.nSolutionD() == 3)
+    {
+        return;
+    }
+
+    const polyBoundaryMesh& pbm = mesh.boundaryMesh();
+    DynamicList<word> reducing;
+    for (const polyPatch& pp : pbm)
+    {
+        if (isA<emptyPolyPatch>(pp) || isA<wedgePolyPatch>(pp))
+        {
+            reducing.append(pp.name() + " (" + pp.type() + ")");
+        }
+    }
+
+    // The boundary file is a list, not a dictionary: a dictionary named
+    // after it carries the file name into the message
+    dictionary context;
+    context.name() = pbm.objectPath();
+    FatalIOErrorInFunction(context)
+        << "The mesh is " << mesh.nSolutionD() << "-D: patches "
+        << flatOutput(reducing) << " in " << pbm.objectPath() << "." << nl
+        << "    dpiFoam needs a 3-D mesh: the DEM moves parcels in 3-D, and"
+        << " OpenFOAM's tracking of a parcel that leaves the plane of an"
+        << " empty or wedge mesh never returns. Give those patches another"
+        << " type (wall, patch or symmetry; in blockMeshDict, then run"
+        << " blockMesh again) and the mesh depth for the parcels"
+        << exit(FatalIOError);
+}
+
+
+// ************************************************************************* //
