@@ -53,7 +53,7 @@ Foam::autoPtr<Foam::coarseGrainingModel> Foam::coarseGrainingModel::New
 {
     const word modelType
     (
-        dict.getOrDefault<word>("coarseGraining", "coatingCoverage")
+        dict.getOrDefault<word>("coarseGraining", "scaledContacts")
     );
 
     if (report)

@@ -58,7 +58,8 @@ Foam::dpiRemotePoints::dpiRemotePoints
             labelList cells(theirs.size());
             forAll(theirs, k)
             {
-                cells[k] = mesh.findCell(theirs[k]);
+                // tets: the same containment test as the asking side's
+                cells[k] = mesh.findCell(theirs[k], polyMesh::CELL_TETS);
             }
             UOPstream os(proci, replies);
             os << cells;

@@ -185,8 +185,13 @@ void Foam::dpiVoidFraction::pointWeights
     {
         const point pt(x + R*u);
 
+        // The cell whose tets hold the point: the tets of a valid mesh
+        // tile it, so the answer is unique and the same whichever
+        // processor asks (the face planes of a warped cell overlap its
+        // neighbour's, which made a point near a processor boundary go to
+        // a cell on this side in parallel and across it in serial)
         label cellj = -1;
-        if (mesh.pointInCell(pt, celli, polyMesh::FACE_PLANES))
+        if (mesh.pointInCell(pt, celli, polyMesh::CELL_TETS))
         {
             cellj = celli;
         }
@@ -194,7 +199,7 @@ void Foam::dpiVoidFraction::pointWeights
         {
             for (const label nbr : nbrs)
             {
-                if (mesh.pointInCell(pt, nbr, polyMesh::FACE_PLANES))
+                if (mesh.pointInCell(pt, nbr, polyMesh::CELL_TETS))
                 {
                     cellj = nbr;
                     break;
@@ -202,7 +207,7 @@ void Foam::dpiVoidFraction::pointWeights
             }
             if (cellj < 0)
             {
-                cellj = mesh.findCell(pt);
+                cellj = mesh.findCell(pt, polyMesh::CELL_TETS);
             }
             if (cellj < 0)
             {
