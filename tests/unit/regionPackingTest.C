@@ -400,6 +400,67 @@ TEST(regionPacking, inhalerPowderBed)
 }
 
 
+// The box the start check holds against the mesh's: the hull of a cone's
+// end discs, no larger. The inhaler's full cone (base radius 0.8 mm at
+// z = -3.33 mm, axis z) reaches z = -3.33 mm, not z = -3.33 - 0.8 mm,
+// which would lie below its mesh (z >= -4 mm) and refuse a valid bed.
+// A tilted cylinder: each end disc reaches r sqrt(1 - a_i^2) along axis i.
+TEST(regionPacking, boundsAreTheEndDiscsHull)
+{
+    FatalIOError.throwExceptions();
+
+    const point a(0.039, 0, -0.00333), b(0.039, 0, -0.00235);
+    autoPtr<dpiInjectionModel> cone = dpiInjectionModel::New
+    (
+        "bed",
+        toDict
+        (
+            bed
+            (
+                "region { shape cone; point1 " + str(a) + "; radius1 8e-4;"
+                " point2 " + str(b) + "; radius2 1e-4; }",
+                "volumeFraction 0.3;",
+                "basis mass; fractions { carrier 0.995357; api 0.004643; }",
+                "",
+                86
+            )
+        ),
+        &materials()
+    );
+    const boundBox bb(cone->bounds());
+    EXPECT_NEAR(bb.min().z(), -0.00333, 1e-15);
+    EXPECT_NEAR(bb.max().z(), -0.00235, 1e-15);
+    EXPECT_NEAR(bb.min().x(), 0.039 - 8e-4, 1e-15);
+    EXPECT_NEAR(bb.max().y(), 8e-4, 1e-15);
+
+    // axis along (1 0 1)/sqrt(2): the discs reach r/sqrt(2) in x and z, r in y
+    const point c(0, 0, 0), d(1e-3, 0, 1e-3);
+    autoPtr<dpiInjectionModel> cyl = dpiInjectionModel::New
+    (
+        "bed",
+        toDict
+        (
+            bed
+            (
+                "region { shape cylinder; point1 " + str(c) + "; point2 "
+              + str(d) + "; radius 2e-4; }",
+                "volumeFraction 0.1;",
+                "basis mass; fractions { carrier 1; }",
+                "",
+                86
+            )
+        ),
+        &materials()
+    );
+    const boundBox cb(cyl->bounds());
+    const scalar h = 2e-4/Foam::sqrt(2.0);
+    EXPECT_NEAR(cb.min().x(), -h, 1e-15);
+    EXPECT_NEAR(cb.max().x(), 1e-3 + h, 1e-15);
+    EXPECT_NEAR(cb.min().y(), -2e-4, 1e-15);
+    EXPECT_NEAR(cb.max().z(), 1e-3 + h, 1e-15);
+}
+
+
 // Same seed: the identical list (bit for bit, which is what makes every
 // processor build the same one); another seed: a different list.
 TEST(regionPacking, reproducibleWithSeed)

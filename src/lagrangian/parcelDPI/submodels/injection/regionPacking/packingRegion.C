@@ -195,11 +195,19 @@ Foam::boundBox Foam::packingRegion::bounds() const
         case shapeType::cylinder:
         case shapeType::cone:
         {
-            const scalar R = max(radius1_, radius2_);
-            const vector ext(vector::uniform(R));
-            boundBox bb(p1_ - ext, p1_ + ext);
-            bb.add(p2_ - ext);
-            bb.add(p2_ + ext);
+            // The hull of the two end discs: a disc of radius r with unit
+            // normal a reaches r sqrt(1 - a_i^2) along axis i (a box of
+            // the radius every way would stick out along the axis, and an
+            // injector whose region fits the mesh would be refused)
+            const vector a((p2_ - p1_)/mag(p2_ - p1_));
+            vector reach;
+            for (direction i = 0; i < vector::nComponents; ++i)
+            {
+                reach[i] = Foam::sqrt(max(scalar(0), 1 - sqr(a[i])));
+            }
+            boundBox bb(p1_ - radius1_*reach, p1_ + radius1_*reach);
+            bb.add(p2_ - radius2_*reach);
+            bb.add(p2_ + radius2_*reach);
             return bb;
         }
     }
