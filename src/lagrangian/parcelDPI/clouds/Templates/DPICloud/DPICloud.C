@@ -353,11 +353,7 @@ void Foam::DPICloud<CloudType>::checkInjectorBounds
     forAll(injectors_, i)
     {
         const boundBox bb(injectors_[i].bounds());
-        if
-        (
-            bb.valid()
-         && !(grown.contains(bb.min()) && grown.contains(bb.max()))
-        )
+        if (bb.valid() && !grown.contains(bb))
         {
             FatalIOErrorInFunction(injDict.subDict(injectors_[i].name()))
                 << "Injector " << injectors_[i].name() << " in "
