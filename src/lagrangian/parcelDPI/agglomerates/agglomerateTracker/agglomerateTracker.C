@@ -310,4 +310,20 @@ void Foam::agglomerateTracker::write(const scalar t)
 }
 
 
+Foam::Map<Foam::label> Foam::agglomerateTracker::members
+(
+    const labelUList& agglomerateId
+)
+{
+    Map<label> n(2*agglomerateId.size() + 1);
+    for (const label id : agglomerateId)
+    {
+        ++n(id, 0);
+    }
+    Pstream::mapCombineGather(n, plusEqOp<label>());
+    Pstream::mapCombineScatter(n);
+    return n;
+}
+
+
 // ************************************************************************* //

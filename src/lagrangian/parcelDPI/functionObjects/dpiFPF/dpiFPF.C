@@ -8,6 +8,7 @@ License
 
 #include "dpiFPF.H"
 #include "dpiCloudInterface.H"
+#include "agglomerateTracker.H"
 #include "fvMesh.H"
 #include "cloud.H"
 #include "Map.H"
@@ -149,15 +150,8 @@ Foam::functionObjects::dpiFPF::count() const
     dpiCloudInterface::parcelSamples s;
     cloudPtr->samples(s);
 
-    // Parcels per agglomerate id, summed over processors: a singlet is an
-    // API parcel that is the only member of its agglomerate
-    Map<label> members(2*s.agglomerateId.size() + 1);
-    forAll(s.agglomerateId, i)
-    {
-        ++members(s.agglomerateId[i], 0);
-    }
-    Pstream::mapCombineGather(members, plusEqOp<label>());
-    Pstream::mapCombineScatter(members);
+    // A singlet is an API parcel that is the only member of its agglomerate
+    const Map<label> members(agglomerateTracker::members(s.agglomerateId));
 
     sample r;
     forAll(s.position, i)

@@ -18,22 +18,6 @@ License
 #include "stringOps.H"
 #include "OSspecific.H"
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
-
-namespace Foam
-{
-    //- Element-wise sum over all processors
-    template<class T>
-    static List<T> globalSum(const List<T>& local)
-    {
-        List<T> sum(local);
-        Pstream::listCombineGather(sum, plusEqOp<T>());
-        Pstream::listCombineScatter(sum);
-        return sum;
-    }
-}
-
-
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>
@@ -241,14 +225,6 @@ void Foam::DPICloud<CloudType>::setModels()
            /"parcelBalance"/this->mesh().time().timeName()
         )
     );
-
-    // Counted on the global patches only: they come first and are the same
-    // on every processor, while the processor patches differ in number
-    // (the element-wise sums in storeCounters need equal list sizes)
-    const label nPatches = this->mesh().boundaryMesh().nNonProcessor();
-    escapedParcels_.setSize(nPatches, 0);
-    escapedPrimaries_.setSize(nPatches, 0);
-    lostParcels_.setSize(nPatches, 0);
 }
 
 
@@ -443,18 +419,10 @@ void Foam::DPICloud<CloudType>::readState()
     reduce(maxId, maxOp<label>());
     nextGlobalId_ = max(nextGlobalId_, maxId + 1);
 
-    const polyBoundaryMesh& pbm = this->mesh().boundaryMesh();
-    const dictionary escDict
+    escapes_.read
     (
         Pstream::master() ? dpiDict.subOrEmptyDict("escaped") : dictionary()
     );
-    forAll(escapedParcels_, patchi)
-    {
-        const dictionary d(escDict.subOrEmptyDict(pbm[patchi].name()));
-        escapedParcels_[patchi] = d.lookupOrDefault<label>("parcels", 0);
-        escapedPrimaries_[patchi] = d.lookupOrDefault<scalar>("primaries", 0);
-        lostParcels_[patchi] = d.lookupOrDefault<label>("lostParcels", 0);
-    }
 
     checkCloudPresent(nextGlobalId_);
 }
@@ -573,8 +541,7 @@ void Foam::DPICloud<CloudType>::checkCloudPresent(const label nIssued) const
     }
 
     // The counters live on the master (readState)
-    label nGone = sum(escapedParcels_) + sum(lostParcels_);
-    Pstream::scatter(nGone);
+    const label nGone = escapes_.nGone();
 
     const Time& time = this->db().time();
     const word cloudDir(time.timeName()/cloud::prefix/this->name());
@@ -651,24 +618,7 @@ void Foam::DPICloud<CloudType>::storeCounters()
 
     // Global sums, the same on every processor (readState gives them back
     // to the master only, so a restart on any decomposition counts once)
-    const labelList escParcels(globalSum(escapedParcels_));
-    const scalarList escPrim(globalSum(escapedPrimaries_));
-    const labelList lost(globalSum(lostParcels_));
-
-    dictionary escDict;
-    const polyBoundaryMesh& pbm = this->mesh().boundaryMesh();
-    forAll(escParcels, patchi)
-    {
-        if (escParcels[patchi] || lost[patchi])
-        {
-            dictionary d;
-            d.add("parcels", escParcels[patchi]);
-            d.add("primaries", escPrim[patchi]);
-            d.add("lostParcels", lost[patchi]);
-            escDict.add(pbm[patchi].name(), d);
-        }
-    }
-    dpiDict.add("escaped", escDict);
+    dpiDict.add("escaped", escapes_.totals());
 
     this->outputProperties().set("dpiCloud", dpiDict);
 }
@@ -1171,9 +1121,8 @@ Foam::DPICloud<CloudType>::DPICloud
     rowXi_(),
     balance_(nullptr),
     agglomerateIds_(),
-    escapedParcels_(),
-    escapedPrimaries_(),
-    lostParcels_()
+    escapes_(this->mesh().boundaryMesh()),
+    escapeMembers_()
 {
     if (this->solution().active())
     {
@@ -1217,9 +1166,8 @@ Foam::DPICloud<CloudType>::DPICloud
     rowXi_(),
     balance_(nullptr),
     agglomerateIds_(),
-    escapedParcels_(c.escapedParcels_),
-    escapedPrimaries_(c.escapedPrimaries_),
-    lostParcels_(c.lostParcels_)
+    escapes_(c.escapes_),
+    escapeMembers_()
 {}
 
 
@@ -1251,9 +1199,8 @@ Foam::DPICloud<CloudType>::DPICloud
     rowXi_(),
     balance_(nullptr),
     agglomerateIds_(),
-    escapedParcels_(),
-    escapedPrimaries_(),
-    lostParcels_()
+    escapes_(this->mesh().boundaryMesh()),
+    escapeMembers_()
 {}
 
 
@@ -1318,8 +1265,16 @@ void Foam::DPICloud<CloudType>::recordEscapedParcel
     const polyPatch& pp
 )
 {
-    ++escapedParcels_[pp.index()];
-    escapedPrimaries_[pp.index()] += p.N();
+    // Its agglomerate as labelled at the end of this fluid step's DEM
+    // sub-steps, the state the move carries out
+    const bool api = engine_->materials().api(p.typeId());
+    escapes_.escaped
+    (
+        pp.index(),
+        p.N(),
+        api,
+        api && escapeMembers_.lookup(p.agglomerateId(), 0) == 1
+    );
 }
 
 
@@ -1330,7 +1285,7 @@ void Foam::DPICloud<CloudType>::recordLostParcel
     const polyPatch& pp
 )
 {
-    ++lostParcels_[pp.index()];
+    escapes_.lost(pp.index());
     WarningInFunction
         << "Parcel " << p.globalId() << " passed through wall patch "
         << pp.name() << " (DEM position " << p.xDEM()
@@ -1619,6 +1574,17 @@ void Foam::DPICloud<CloudType>::motion
 
     writeDiagnostics();
 
+    // The agglomerates' sizes, for the parcels this move carries out
+    {
+        labelList ids(this->size());
+        label i = 0;
+        for (const parcelType& p : *this)
+        {
+            ids[i++] = p.agglomerateId();
+        }
+        escapeMembers_ = agglomerateTracker::members(ids);
+    }
+
     // Relocate every parcel to its DEM position: one tracking pass, which
     // also hands parcels over to neighbouring processors
     CloudType::move(cloud, td, Dt);
@@ -1651,16 +1617,11 @@ void Foam::DPICloud<CloudType>::info()
         << " (singlets " << ag.singletAPIPrimaries << ")" << nl;
 
     // The global per-patch totals stored by this step's motion
-    const dictionary& escDict =
-        this->outputProperties().subDict("dpiCloud").subDict("escaped");
-    for (const word& patchName : escDict.sortedToc())
-    {
-        const dictionary& d = escDict.subDict(patchName);
-        Info<< "    Patch " << patchName
-            << ": escaped parcels " << d.get<label>("parcels")
-            << " (primaries " << d.get<scalar>("primaries") << ")"
-            << ", lost through wall " << d.get<label>("lostParcels") << nl;
-    }
+    escapeRecord::report
+    (
+        Info,
+        this->outputProperties().subDict("dpiCloud").subDict("escaped")
+    );
 }
 
 
