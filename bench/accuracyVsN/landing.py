@@ -6,8 +6,8 @@ wall first: with 5 um API on a 70 um carrier, a cap of 30 degrees around
 the point facing the wall), the largest rotational kinetic energy during the
 impact (demDiagnostics), and the detached API fraction at the end. Runs are
 split into "lands on API" (at least one parcel in the cap) and "head-on"
-(none), per N: the measured mechanism of the N = 10 bias (bench/README.md,
-section 4).
+(none), per N: the measured mechanism of the N = 10 bias
+(bench/accuracyVsN/NOTES.md, "How the carrier lands").
 
 Usage: bench/accuracyVsN/landing.py [casesDir]
 """

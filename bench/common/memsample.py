@@ -12,7 +12,7 @@ counts it (/proc/PID/status):
 Why: the peak RSS above an empty case, per particle, is the benchmarks'
 memory figure, but on 2 processes at 2,000 particles its noise is larger
 than the figure: the shared libraries' pages that are mapped move by 5-10
-MB between runs of the same build (bench/README.md section 8, "Where the
+MB between runs of the same build (bench/packedBed/NOTES.md, "Where the
 2-process memory figure's noise comes from"). The anonymous peak is the
 data that grows with the particles, without that noise.
 

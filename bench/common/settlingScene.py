@@ -314,7 +314,7 @@ def writeDpi(case, x, v, L, args):
 
     # Plain lists for the particleList injector (read as a lagrangian
     # field is; one dictionary per particle would dominate the set-up time
-    # and the peak memory at 50,000: bench/README section 8)
+    # and the peak memory at 50,000: bench/packedBed/NOTES.md)
     for name, values in (("carrierPositions", x), ("carrierVelocities", v)):
         with open(os.path.join(case, "constant", name), "w") as f:
             f.write("// %d carriers, %s (bench/common/settlingScene.py)\n"

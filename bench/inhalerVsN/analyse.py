@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 """Collect bench/inhalerVsN runs.
 
-Usage: analyse.py cases --t1 T1 --ramp R --csv results.csv \
-           --summary summary.csv --md results.md --png inhalerVsN.png
+Usage: analyse.py cases --t1 T1 --ramp R --csv results/results.csv \
+           --summary results/summary.csv --md results/results.md \
+           --png results/inhalerVsN.png
 
 Per run (cases/N<N>-seed<seed>, the tutorial inhaler run by Allrun -np 1),
 from its logs:

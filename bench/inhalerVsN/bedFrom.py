@@ -33,7 +33,7 @@ new start still resets is the contacts' histories). What this is for: a run of N
 N = 1 settled into has N = 1's sedimentation and N = 10's breath (and a
 run of N = 1 from N = 10's bed the other way round), so comparing it with
 N = 1 tells whether a bias is made while the powder settles or while the
-gas blows (bench/README.md section 4b).
+gas blows (bench/inhalerVsN/NOTES.md, "Where the bias is made").
 """
 import argparse
 import math

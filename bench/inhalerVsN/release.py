@@ -4,10 +4,11 @@
 Usage: release.py CASE... [--md release.md] [--window 2e-5] [--min-free 2e-4]
 
 Each CASE is a finished inhalerVsN case (N<N>-seed<S>) whose stage 2 ran
-with the contact-event probe (probes/contactEvents.patch, see README.md
-section 4b): contactEvents.dat lists every start (S) and end (E) of a
-particle pair's contact and of a particle's contact with any wall, each
-with the time and both particles' position, velocity and spin.
+with the contact-event probe (a patch, not in the product: NOTES.md,
+"Removed from the tree", gives it back): contactEvents.dat lists every
+start (S) and end (E) of a particle pair's contact and of a particle's
+contact with any wall, each with the time and both particles' position,
+velocity and spin.
 
 Release of an API parcel: the end of its last carrier contact before a
 period of at least --min-free with none (or with none to the end of the

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The cohesive variant of bench/packedBed: the settled bed of carriers
-coated with API, a dpiFoam DEM-only case (dpiFoam alone: see bench/README,
-section 8).
+coated with API, a dpiFoam DEM-only case (dpiFoam alone: see
+bench/packedBed/NOTES.md, "Cohesive variant").
 
     cohesive.py DIR --bed cases/bed-N2000.npz [--N 10] [--primaries 100]
                 [--steps 5000] [--fluid-every 1000] [--dt 1e-8] [--seed 20241]

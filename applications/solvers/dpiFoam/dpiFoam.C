@@ -102,7 +102,7 @@ int main(int argc, char *argv[])
     // from the heap between long-lived parcel data and leave holes there:
     // measured on a 50,000-carrier bed on 2 processes, the heap in use
     // stayed at ~66 MB per process while the heap grew by ~10 MB of holes
-    // over five fluid steps (bench/README.md, section 8)
+    // over five fluid steps (bench/packedBed)
     mallopt(M_MMAP_THRESHOLD, 1024*1024);
     #endif
 
