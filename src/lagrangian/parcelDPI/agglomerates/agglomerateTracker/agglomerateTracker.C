@@ -18,6 +18,7 @@ License
 #include "boundBox.H"
 #include "processorHalo.H"
 #include "PstreamCombineReduceOps.H"
+#include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -323,6 +324,34 @@ Foam::Map<Foam::label> Foam::agglomerateTracker::members
     Pstream::mapCombineGather(n, plusEqOp<label>());
     Pstream::mapCombineScatter(n);
     return n;
+}
+
+
+Foam::agglomerateTracker::composition Foam::agglomerateTracker::compose
+(
+    const labelUList& agglomerateId,
+    const scalarUList& d,
+    const scalarUList& rho,
+    const boolUList& carrier
+)
+{
+    composition c;
+    c.parcels = members(agglomerateId);
+    forAll(agglomerateId, i)
+    {
+        const label id = agglomerateId[i];
+        const scalar v = constant::mathematical::pi/6*pow3(d[i]);
+        c.volume(id, 0) += v;
+        c.mass(id, 0) += rho[i]*v;
+        c.carriers(id, 0) += carrier[i] ? 1 : 0;
+    }
+    Pstream::mapCombineGather(c.volume, plusEqOp<scalar>());
+    Pstream::mapCombineScatter(c.volume);
+    Pstream::mapCombineGather(c.mass, plusEqOp<scalar>());
+    Pstream::mapCombineScatter(c.mass);
+    Pstream::mapCombineGather(c.carriers, plusEqOp<label>());
+    Pstream::mapCombineScatter(c.carriers);
+    return c;
 }
 
 

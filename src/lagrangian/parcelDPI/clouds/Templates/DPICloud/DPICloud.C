@@ -1122,7 +1122,8 @@ Foam::DPICloud<CloudType>::DPICloud
     balance_(nullptr),
     agglomerateIds_(),
     escapes_(this->mesh().boundaryMesh()),
-    escapeMembers_()
+    escapeComposition_(),
+    escapedThisStep_()
 {
     if (this->solution().active())
     {
@@ -1167,7 +1168,8 @@ Foam::DPICloud<CloudType>::DPICloud
     balance_(nullptr),
     agglomerateIds_(),
     escapes_(c.escapes_),
-    escapeMembers_()
+    escapeComposition_(),
+    escapedThisStep_()
 {}
 
 
@@ -1200,7 +1202,8 @@ Foam::DPICloud<CloudType>::DPICloud
     balance_(nullptr),
     agglomerateIds_(),
     escapes_(this->mesh().boundaryMesh()),
-    escapeMembers_()
+    escapeComposition_(),
+    escapedThisStep_()
 {}
 
 
@@ -1231,6 +1234,8 @@ void Foam::DPICloud<CloudType>::samples(parcelSamples& s) const
     s.api.setSize(n);
     s.globalId.setSize(n);
     s.agglomerateId.setSize(n);
+    s.d.setSize(n);
+    s.rho.setSize(n);
 
     label i = 0;
     for (const parcelType& p : *this)
@@ -1240,6 +1245,8 @@ void Foam::DPICloud<CloudType>::samples(parcelSamples& s) const
         s.api[i] = engine_.valid() && engine_->materials().api(p.typeId());
         s.globalId[i] = p.globalId();
         s.agglomerateId[i] = p.agglomerateId();
+        s.d[i] = p.d();
+        s.rho[i] = p.rho();
         ++i;
     }
 }
@@ -1267,13 +1274,24 @@ void Foam::DPICloud<CloudType>::recordEscapedParcel
 {
     // Its agglomerate as labelled at the end of this fluid step's DEM
     // sub-steps, the state the move carries out
-    const bool api = engine_->materials().api(p.typeId());
+    const agglomerateTracker::composition& c = escapeComposition_;
+    const label id = p.agglomerateId();
+
+    escapedParcel e;
+    e.patchi = pp.index();
+    e.N = p.N();
+    e.api = engine_->materials().api(p.typeId());
+    e.d = p.d();
+    e.rho = p.rho();
+    e.agglomerateParcels = c.parcels.lookup(id, 1);
+    e.agglomerateVolume = c.volume.lookup(id, 0);
+    e.agglomerateMass = c.mass.lookup(id, 0);
+    e.onCarrier = c.carriers.lookup(id, 0) > 0;
+    escapedThisStep_.append(e);
+
     escapes_.escaped
     (
-        pp.index(),
-        p.N(),
-        api,
-        api && escapeMembers_.lookup(p.agglomerateId(), 0) == 1
+        e.patchi, e.N, e.api, e.api && e.agglomerateParcels == 1
     );
 }
 
@@ -1574,15 +1592,25 @@ void Foam::DPICloud<CloudType>::motion
 
     writeDiagnostics();
 
-    // The agglomerates' sizes, for the parcels this move carries out
+    // What the agglomerates are made of, for the parcels this move
+    // carries out
     {
-        labelList ids(this->size());
+        const label n = this->size();
+        labelList ids(n);
+        scalarList d(n), rho(n);
+        boolList carrier(n);
+        const demMaterials& mat = engine_->materials();
         label i = 0;
         for (const parcelType& p : *this)
         {
-            ids[i++] = p.agglomerateId();
+            ids[i] = p.agglomerateId();
+            d[i] = p.d();
+            rho[i] = p.rho();
+            carrier[i] = !mat.api(p.typeId());
+            ++i;
         }
-        escapeMembers_ = agglomerateTracker::members(ids);
+        escapeComposition_ = agglomerateTracker::compose(ids, d, rho, carrier);
+        escapedThisStep_.clear();
     }
 
     // Relocate every parcel to its DEM position: one tracking pass, which

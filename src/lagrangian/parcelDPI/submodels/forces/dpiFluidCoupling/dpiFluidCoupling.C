@@ -300,7 +300,6 @@ Foam::dpiFluidCoupling::dpiFluidCoupling
 :
     mesh_(mesh),
     dict_(cloudDict.subOrEmptyDict("fluidCoupling")),
-    gasFreeCell_(),
     fluidOn_(fluidPresent(mesh, U)),
     update_
     (
@@ -309,6 +308,7 @@ Foam::dpiFluidCoupling::dpiFluidCoupling
     refreshInterval_(dict_.getOrDefault<label>("refreshInterval", 1)),
     interpolation_(dict_.getOrDefault<word>("interpolation", "cellPoint")),
     forces_(),
+    gasFreeCell_(),
     U_(U),
     rho_(rho),
     mu_(mu),
