@@ -264,8 +264,13 @@ int main(int argc, char *argv[])
         << loop - gasTime - cloudTime
         << ", total " << startUp + loop << endl;
 
-    cloud.engine().writePerformance(Info);
-    cloud.balance().summary(Info);
+    // An inactive cloud (solution/active false: the gas alone) has no
+    // engine to report on
+    if (cloud.solution().active())
+    {
+        cloud.engine().writePerformance(Info);
+        cloud.balance().summary(Info);
+    }
 
     Info<< "End\n" << endl;
 

@@ -234,7 +234,11 @@ void Foam::incompressibleGas::attach(const basicDPICloud& cloud)
 {
     // With a void fraction model (fluidCoupling/voidFraction) its alphaMin
     // is the floor, the same the drag sees through alpha
-    const dpiVoidFraction* vf = cloud.fluidCoupling().voidFraction();
+    // (an inactive cloud, the gas alone, has no coupling)
+    const dpiVoidFraction* vf =
+        cloud.solution().active()
+      ? cloud.fluidCoupling().voidFraction()
+      : nullptr;
     if (vf)
     {
         alphacMin_ = vf->alphaMin();
@@ -451,7 +455,10 @@ void Foam::incompressibleGas::solve(basicDPICloud& cloud)
     }
 
     // The parcels' share of the implicit drag (momentum balance)
-    cloud.fluidCoupling().correctParcels(cloud, Uc);
+    if (cloud.solution().active())
+    {
+        cloud.fluidCoupling().correctParcels(cloud, Uc);
+    }
 }
 
 
