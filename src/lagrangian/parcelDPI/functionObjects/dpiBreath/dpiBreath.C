@@ -11,6 +11,7 @@ License
 #include "volFields.H"
 #include "surfaceFields.H"
 #include "IOdictionary.H"
+#include "devicePatches.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -26,31 +27,6 @@ namespace functionObjects
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-Foam::labelHashSet Foam::functionObjects::dpiBreath::patches
-(
-    const dictionary& dict,
-    const word& key
-) const
-{
-    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
-    const wordRes names(dict.get<wordRes>(key));
-    const labelHashSet ids(pbm.patchSet(names, false, true));
-    if (ids.empty())
-    {
-        wordList meshPatches(pbm.nNonProcessor());
-        forAll(meshPatches, patchi)
-        {
-            meshPatches[patchi] = pbm[patchi].name();
-        }
-        FatalIOErrorInFunction(dict)
-            << "Function object " << name() << ": `" << key << "` " << names
-            << " names no patch of the mesh (patches: " << meshPatches
-            << ")." << exit(FatalIOError);
-    }
-    return ids;
-}
-
 
 Foam::string Foam::functionObjects::dpiBreath::inletSetting() const
 {
@@ -202,8 +178,9 @@ bool Foam::functionObjects::dpiBreath::read(const dictionary& dict)
     fvMeshFunctionObject::read(dict);
     writeFile::read(dict);
 
-    inlet_ = patches(dict, "inlet");
-    outlet_ = patches(dict, "outlet");
+    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+    inlet_ = devicePatches::select(pbm, dict, "inlet", name());
+    outlet_ = devicePatches::select(pbm, dict, "outlet", name());
 
     // The gas phase: the key, else transportProperties' continuousPhase
     // (dpiFoam's), else air

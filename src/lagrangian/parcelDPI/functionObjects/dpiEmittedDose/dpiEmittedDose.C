@@ -11,6 +11,7 @@ License
 #include "cloud.H"
 #include "mathematicalConstants.H"
 #include "FixedList.H"
+#include "devicePatches.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -55,24 +56,6 @@ namespace
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-const Foam::dpiCloudInterface&
-Foam::functionObjects::dpiEmittedDose::cloud() const
-{
-    const dpiCloudInterface* c =
-        mesh_.cfindObject<dpiCloudInterface>(cloudName_);
-    if (!c)
-    {
-        FatalErrorInFunction
-            << "Function object " << name() << ": no dpiFoam cloud named "
-            << cloudName_ << " in the mesh (clouds: "
-            << mesh_.sortedNames<Foam::cloud>() << ")." << nl
-            << "    Set `cloud` to the couplingProperties cloudName."
-            << exit(FatalError);
-    }
-    return *c;
-}
-
 
 void Foam::functionObjects::dpiEmittedDose::writeFileHeader(Ostream& os)
 {
@@ -180,20 +163,7 @@ bool Foam::functionObjects::dpiEmittedDose::read(const dictionary& dict)
     patches_.clear();
     if (dict.found("patches"))
     {
-        const wordRes names(dict.get<wordRes>("patches"));
-        patches_ = pbm.patchSet(names, false, true);
-        if (patches_.empty())
-        {
-            wordList meshPatches(pbm.nNonProcessor());
-            forAll(meshPatches, patchi)
-            {
-                meshPatches[patchi] = pbm[patchi].name();
-            }
-            FatalIOErrorInFunction(dict)
-                << "Function object " << name() << ": `patches` " << names
-                << " names no patch of the mesh (patches: " << meshPatches
-                << ")." << exit(FatalIOError);
-        }
+        patches_ = devicePatches::select(pbm, dict, "patches", name());
     }
     else
     {
@@ -219,7 +189,8 @@ bool Foam::functionObjects::dpiEmittedDose::read(const dictionary& dict)
 
 bool Foam::functionObjects::dpiEmittedDose::execute()
 {
-    const dpiCloudInterface& c = cloud();
+    const dpiCloudInterface& c =
+        dpiCloudInterface::find(mesh_, cloudName_, name());
     const scalar pi6 = constant::mathematical::pi/6;
 
     // The parcels that left in the last fluid step

@@ -134,21 +134,8 @@ Foam::functionObjects::dpiFPF::dpiFPF
 Foam::functionObjects::dpiFPF::sample
 Foam::functionObjects::dpiFPF::count() const
 {
-    const dpiCloudInterface* cloudPtr =
-        mesh_.cfindObject<dpiCloudInterface>(cloudName_);
-
-    if (!cloudPtr)
-    {
-        FatalErrorInFunction
-            << "Function object " << name() << ": no dpiFoam cloud named "
-            << cloudName_ << " in the mesh (clouds: "
-            << mesh_.sortedNames<cloud>() << ")." << nl
-            << "    Set `cloud` to the couplingProperties cloudName."
-            << exit(FatalError);
-    }
-
     dpiCloudInterface::parcelSamples s;
-    cloudPtr->samples(s);
+    dpiCloudInterface::find(mesh_, cloudName_, name()).samples(s);
 
     // A singlet is an API parcel that is the only member of its agglomerate
     const Map<label> members(agglomerateTracker::members(s.agglomerateId));
