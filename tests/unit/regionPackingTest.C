@@ -6,7 +6,8 @@ License
     License version 3 or (at your option) any later version; see LICENSE.
 
 Description
-    Region packing in a sphere, box, cylinder and cone: achieved solid
+    Region packing in a sphere, box, cylinder, cone and closed surface (an
+    STL of a box): achieved solid
     fraction, no overlaps, every particle wholly inside (checked with
     geometry written independently of packingRegion), number and mass
     fractions, reproducibility with a seed, packing around a carrier
@@ -25,6 +26,9 @@ Description
 #include <vector>
 #include <sstream>
 #include <string>
+#include <fstream>
+#include <cmath>
+#include "OSspecific.H"
 
 using namespace Foam;
 
@@ -187,6 +191,49 @@ bool inCone
     return (Rt - rho)*cosAlpha >= r - eps;
 }
 
+// The box of the surface tests, its corners exact in float32 (an STL
+// holds single precision) and in decimal: multiples of 2^-17 m
+const point cubeMax(13*std::ldexp(1.0, -17), 16*std::ldexp(1.0, -17), 10*std::ldexp(1.0, -17));
+
+// A closed ASCII STL of the box (0, cubeMax): 12 triangles facing out; its
+// absolute path
+std::string cubeStl()
+{
+    const std::string path =
+        Foam::getEnv("TMPDIR").size() ? Foam::getEnv("TMPDIR") : "/tmp";
+    const std::string file =
+        path + "/regionPackingCube" + std::to_string(Foam::pid()) + ".stl";
+    const point& m = cubeMax;
+    const point v[8] =
+    {
+        {0, 0, 0}, {m.x(), 0, 0}, {m.x(), m.y(), 0}, {0, m.y(), 0},
+        {0, 0, m.z()}, {m.x(), 0, m.z()}, {m.x(), m.y(), m.z()}, {0, m.y(), m.z()}
+    };
+    // Two triangles per face, counter-clockwise seen from outside
+    const int tri[12][3] =
+    {
+        {0, 3, 2}, {0, 2, 1}, {4, 5, 6}, {4, 6, 7}, {0, 1, 5}, {0, 5, 4},
+        {3, 7, 6}, {3, 6, 2}, {0, 4, 7}, {0, 7, 3}, {1, 2, 6}, {1, 6, 5}
+    };
+    std::ofstream os(file);
+    os.precision(17);
+    os << "solid cube\n";
+    for (const auto& t : tri)
+    {
+        const vector n(((v[t[1]] - v[t[0]]) ^ (v[t[2]] - v[t[0]])).normalise());
+        os << " facet normal " << n.x() << ' ' << n.y() << ' ' << n.z()
+           << "\n  outer loop\n";
+        for (const int k : t)
+        {
+            os << "   vertex " << v[k].x() << ' ' << v[k].y() << ' '
+               << v[k].z() << '\n';
+        }
+        os << "  endloop\n endfacet\n";
+    }
+    os << "endsolid cube\n";
+    return file;
+}
+
 struct shapeCase
 {
     std::string name;
@@ -241,6 +288,13 @@ std::vector<shapeCase> shapes()
             pi*L/3*(sqr(60e-6) + 60e-6*20e-6 + sqr(20e-6)),
             [a, b](const point& p, const scalar r)
             { return inCone(p, r, a, 60e-6, b, 20e-6); }
+        },
+        {
+            "surface",
+            "region { shape surface; file \"" + cubeStl() + "\"; }",
+            cmptProduct(cubeMax),
+            [](const point& p, const scalar r)
+            { return inBox(p, r, point::zero, cubeMax); }
         }
     };
 }
@@ -696,7 +750,11 @@ TEST(regionPacking, badInputIsRejected)
     (
         bed("region { shape ball; radius 1e-4; }", amount, fr)
     );
-    EXPECT_TRUE(has(m, "ball") && has(m, "sphere box cylinder cone")) << m;
+    EXPECT_TRUE
+    (
+        has(m, "ball") && has(m, "sphere") && has(m, "box")
+     && has(m, "cylinder") && has(m, "cone") && has(m, "surface")
+    ) << m;
 
     m = message(bed(box, amount, "basis number; fractions { API 1; }"));
     EXPECT_TRUE(has(m, "API") && has(m, "carrier")) << m;
@@ -739,3 +797,82 @@ TEST(regionPacking, badInputIsRejected)
 }
 
 // ************************************************************************* //
+
+
+// A closed surface (an STL of a box) is the box: the same volume (exact: the
+// corners are exact in float32), the same bounds, and the same answer to
+// "does a sphere of radius r centred at p fit" at 20,000 random points and
+// radii (inside a box the nearest triangle is the nearest face, so the
+// surface's test, inside and no triangle within r, is the box's per-axis
+// inset); a surface that is not closed, or a missing file, is refused.
+TEST(regionPacking, surfaceRegionIsTheBoxItEncloses)
+{
+    FatalIOError.throwExceptions();
+
+    const std::string stl = cubeStl();
+    std::ostringstream boxText;
+    boxText.precision(17);
+    boxText << "shape box; min (0 0 0); max (" << cubeMax.x() << ' '
+            << cubeMax.y() << ' ' << cubeMax.z() << ");";
+    const autoPtr<packingRegion> box(packingRegion::New(toDict(boxText.str())));
+    const autoPtr<packingRegion> surf
+    (
+        packingRegion::New(toDict("shape surface; file \"" + stl + "\";"))
+    );
+
+    EXPECT_EQ(surf->shapeName(), "surface");
+    EXPECT_NEAR(surf->volume(), box->volume(), 1e-14*box->volume());
+    EXPECT_EQ(surf->bounds().min(), box->bounds().min());
+    EXPECT_EQ(surf->bounds().max(), box->bounds().max());
+
+    Random rnd(7);
+    label differ = 0;
+    for (label i = 0; i < 20000; ++i)
+    {
+        const point p
+        (
+            cmptMultiply(1.2*cubeMax, rnd.sample01<vector>()) - 0.1*cubeMax
+        );
+        const scalar r = 0.3*cmptMin(cubeMax)*rnd.sample01<scalar>();
+        differ += surf->contains(p, r) != box->contains(p, r);
+    }
+    EXPECT_EQ(differ, 0);
+    EXPECT_TRUE(surf->fits(0.49*cmptMin(cubeMax)));
+    EXPECT_FALSE(surf->fits(0.51*cmptMin(cubeMax)));
+
+    // Not closed: the cube without its last two triangles
+    {
+        std::ifstream is(stl);
+        std::string text((std::istreambuf_iterator<char>(is)), {});
+        for (int k = 0; k < 2; ++k)
+        {
+            const auto at = text.rfind(" facet normal");
+            text.erase(at, text.find("endfacet", at) + 9 - at);
+        }
+        std::ofstream(stl) << text;
+    }
+    std::string m;
+    try
+    {
+        packingRegion::New(toDict("shape surface; file \"" + stl + "\";"));
+    }
+    catch (const Foam::error& e)
+    {
+        m = e.message();
+    }
+    EXPECT_NE(m.find("must be a closed surface"), std::string::npos) << m;
+
+    m.clear();
+    try
+    {
+        packingRegion::New(toDict("shape surface; file \"/no/such.stl\";"));
+    }
+    catch (const Foam::error& e)
+    {
+        m = e.message();
+    }
+    EXPECT_NE(m.find("no file"), std::string::npos) << m;
+
+    Foam::rm(stl);
+}
+

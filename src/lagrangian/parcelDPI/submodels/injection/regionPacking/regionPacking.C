@@ -229,7 +229,7 @@ Foam::dpiInjectionModels::regionPacking::regionPacking
             "countObstacles", "maxAttempts"
         }
     ),
-    region_(dict.subDict("region")),
+    region_(packingRegion::New(dict.subDict("region"))),
     types_(),
     massBasis_(false),
     volumeFraction_(-1),
@@ -345,11 +345,11 @@ Foam::dpiInjectionModels::regionPacking::regionPacking
 
     for (const packedType& t : types_)
     {
-        if (t.x > 0 && !region_.fits(0.5*t.d))
+        if (t.x > 0 && !region_->fits(0.5*t.d))
         {
             FatalIOErrorInFunction(dict)
                 << "A particle of type " << t.name << " (d = " << t.d
-                << " m) does not fit in the " << region_.shapeName()
+                << " m) does not fit in the " << region_->shapeName()
                 << " of dictionary " << dict.subDict("region").name()
                 << exit(FatalIOError);
         }
@@ -369,15 +369,15 @@ Foam::labelList Foam::dpiInjectionModels::regionPacking::counts
     if (N < 0)
     {
         const scalar target =
-            volumeFraction_*region_.volume()
+            volumeFraction_*region_->volume()
           - (countObstacles_ ? obstacleVolume : 0);
 
         if (!(target > 0))
         {
             FatalIOErrorInFunction(dict_)
                 << "Injector " << name_ << ": the obstacles in the "
-                << region_.shapeName() << " already occupy "
-                << obstacleVolume/region_.volume() << " of it, at least the"
+                << region_->shapeName() << " already occupy "
+                << obstacleVolume/region_->volume() << " of it, at least the"
                 << " target volumeFraction " << volumeFraction_
                 << " in dictionary " << dict_.name() << "; nothing to pack"
                 << " (raise volumeFraction or set countObstacles false)"
@@ -444,7 +444,7 @@ void Foam::dpiInjectionModels::regionPacking::pack
 
     // Obstacles near the region: small ones into the grid, larger ones in
     // a list
-    const boundBox near(region_.bounds());
+    const boundBox near(region_->bounds());
     const point origin(near.min() - vector::uniform(dMax));
     sphereGrid grid(origin, dMax);
     List<sphere> large;
@@ -465,7 +465,7 @@ void Foam::dpiInjectionModels::regionPacking::pack
             }
         }
         ++nObstacles;
-        if (region_.contains(c, 0))
+        if (region_->contains(c, 0))
         {
             obstacleVolume += sphereVolume(2*r);
         }
@@ -515,7 +515,7 @@ void Foam::dpiInjectionModels::regionPacking::pack
         nTotal += c;
     }
 
-    const scalar V = region_.volume();
+    const scalar V = region_->volume();
     scalar placedVolume = 0;
     label nPlaced = 0;
     scalar nDraws = 0;
@@ -532,7 +532,7 @@ void Foam::dpiInjectionModels::regionPacking::pack
             {
                 ++nDraws;
                 point p;
-                if (!region_.sample(rnd, r, p))
+                if (!region_->sample(rnd, r, p))
                 {
                     continue;
                 }
@@ -576,7 +576,7 @@ void Foam::dpiInjectionModels::regionPacking::pack
                     << " attempts (maxAttempts)." << nl
                     << "    Reached solid fraction "
                     << (placedVolume + (countObstacles_ ? obstacleVolume : 0))/V
-                    << " of the " << region_.shapeName() << " (target "
+                    << " of the " << region_->shapeName() << " (target "
                     << (volumeFraction_ > 0 ? "volumeFraction " : "nParticles ")
                     << (volumeFraction_ > 0 ? volumeFraction_ : scalar(nTotal))
                     << ", obstacles " << obstacleVolume/V << ")." << nl
@@ -597,7 +597,7 @@ void Foam::dpiInjectionModels::regionPacking::pack
     {
         Info<< (k ? " " : "") << types_[k].name << " " << n[k];
     }
-    Info<< ") in " << region_.shapeName() << " of volume " << V
+    Info<< ") in " << region_->shapeName() << " of volume " << V
         << " m^3, solid fraction "
         << (placedVolume + (countObstacles_ ? obstacleVolume : 0))/V;
     if (volumeFraction_ > 0)
