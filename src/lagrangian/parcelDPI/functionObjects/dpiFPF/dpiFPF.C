@@ -23,6 +23,17 @@ namespace functionObjects
 {
     defineTypeNameAndDebug(dpiFPF, 0);
     addToRunTimeSelectionTable(functionObject, dpiFPF, dictionary);
+
+    // The name that says what it measures: the FPF in a sampling box (the
+    // user guide's), beside the emitted dose's aerodynamic FPF
+    // (dpiEmittedDose)
+    addNamedToRunTimeSelectionTable
+    (
+        functionObject,
+        dpiFPF,
+        dictionary,
+        dpiBoxFPF
+    );
 }
 }
 
