@@ -128,5 +128,5 @@ for k, t in enumerate(a.times):
 fig.colorbar(cs, ax=[r[0] for r in ax], shrink=0.8,
              label="gas speed [m/s] (y = 0)")
 fig.suptitle(a.title)
-fig.savefig(a.output, dpi=130)
+fig.savefig(a.output, dpi=130, bbox_inches="tight")
 print("deviceView.py: %s (%s)" % (a.output, ", ".join(a.times)))
