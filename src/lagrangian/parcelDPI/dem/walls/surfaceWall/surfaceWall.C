@@ -7,10 +7,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "surfaceWall.H"
-#include "triSurface.H"
-#include "polyMesh.H"
-#include "Time.H"
-#include "OSspecific.H"
+#include "caseSurface.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -35,51 +32,25 @@ Foam::demWalls::surfaceWall::surface
     const polyMesh* mesh
 )
 {
-    fileName file(dict.get<fileName>("file"));
-    file.expand();
-    if (!file.isAbsolute())
-    {
-        file =
-        (
-            mesh
-          ? mesh->time().globalPath()/mesh->time().constant()/"triSurface"
-          : cwd()
-        )/file;
-    }
-    if (!isFile(file))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Wall " << name << " (type surface): no file " << file
-            << nl << "    A relative `file` is taken in the case's"
-            << " constant/triSurface; any format OpenFOAM's triSurface"
-            << " reads (STL, OBJ, VTK, ...)." << exit(FatalIOError);
-    }
-
-    const scalar scale = dict.getOrDefault<scalar>("scale", 1);
-    if (scale <= 0)
-    {
-        FatalIOErrorInFunction(dict)
-            << "Wall " << name << ": scale " << scale << " must be > 0"
-            << " (1e-3 for a file in mm)" << exit(FatalIOError);
-    }
-
-    // Reading merges the vertices an STL repeats per triangle
-    const triSurface surf(file);
+    const triSurface surf
+    (
+        caseSurface::read(dict, "Wall " + name + " (type surface)")
+    );
     if (surf.empty())
     {
         FatalIOErrorInFunction(dict)
-            << "Wall " << name << ": the surface " << file
+            << "Wall " << name << ": the surface " << caseSurface::path(dict)
             << " holds no triangle" << exit(FatalIOError);
     }
 
-    pointField points(scale*surf.points());
+    pointField points(surf.points());
     triFaceList tris(surf.size());
     forAll(surf, i)
     {
         tris[i] = triFace(surf[i][0], surf[i][1], surf[i][2]);
     }
 
-    Info<< "    Wall " << name << ": surface " << file << ", "
+    Info<< "    Wall " << name << ": surface " << caseSurface::path(dict) << ", "
         << tris.size() << " triangles on " << points.size() << " points"
         << endl;
 

@@ -7,7 +7,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "surfaceRegion.H"
-#include "OSspecific.H"
+#include "caseSurface.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -30,37 +30,11 @@ Foam::triSurface Foam::packingRegions::surfaceRegion::read
 )
 {
     checked(dict, {"file", "scale"});
-
-    fileName file(dict.get<fileName>("file"));
-    if (!file.isAbsolute() && file[0] != '$')
-    {
-        file = "$FOAM_CASE/constant/triSurface"/file;
-    }
-    file.expand();
-    if (!isFile(file))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Region of dictionary " << dict.name() << " (shape surface):"
-            << " no file " << file << nl << "    A relative `file` is taken"
-            << " in the case's constant/triSurface; any format OpenFOAM's"
-            << " triSurface reads (STL, OBJ, VTK, ...)."
-            << exit(FatalIOError);
-    }
-
-    const scalar scale = dict.getOrDefault<scalar>("scale", 1);
-    if (!(scale > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Entry 'scale' = " << scale << " in dictionary " << dict.name()
-            << " must be > 0 (1e-3 for a file in mm)" << exit(FatalIOError);
-    }
-
-    triSurface surf(file);
-    if (scale != 1)
-    {
-        surf.scalePoints(scale);
-    }
-    return surf;
+    return caseSurface::read
+    (
+        dict,
+        "Region of dictionary " + dict.name() + " (shape surface)"
+    );
 }
 
 
