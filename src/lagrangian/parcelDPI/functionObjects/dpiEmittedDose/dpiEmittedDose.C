@@ -52,6 +52,63 @@ namespace
             &d.fine, &d.primaries, &d.elsewhere
         };
     }
+
+    //- A dose as a list and back (for a reduction)
+    Foam::scalarList toList(Foam::functionObjects::dpiEmittedDose::dose& d)
+    {
+        const Foam::FixedList<Foam::scalar*, 7> f(fields(d));
+        Foam::scalarList l(f.size());
+        forAll(f, k)
+        {
+            l[k] = *f[k];
+        }
+        return l;
+    }
+
+    void fromList
+    (
+        const Foam::scalarList& l,
+        Foam::functionObjects::dpiEmittedDose::dose& d
+    )
+    {
+        const Foam::FixedList<Foam::scalar*, 7> f(fields(d));
+        forAll(f, k)
+        {
+            *f[k] = l[k];
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * * * dose  * * * * * * * * * * * * * * * * //
+
+void Foam::functionObjects::dpiEmittedDose::dose::add
+(
+    const scalar m,
+    const scalar N,
+    const bool onCarrier,
+    const label agglomerateParcels,
+    const bool isFine
+)
+{
+    emitted += m;
+    primaries += N;
+    if (onCarrier)
+    {
+        onCarriers += m;
+    }
+    else if (agglomerateParcels <= 1)
+    {
+        singlets += m;
+    }
+    else
+    {
+        agglomerates += m;
+    }
+    if (isFine)
+    {
+        fine += m;
+    }
 }
 
 
@@ -82,6 +139,159 @@ void Foam::functionObjects::dpiEmittedDose::writeFileHeader(Ostream& os)
 }
 
 
+void Foam::functionObjects::dpiEmittedDose::writeOutletsHeader(Ostream& os)
+{
+    writeHeader(os, "Emitted dose of cloud " + cloudName_ + " per outlet");
+    writeHeader
+    (
+        os,
+        "API masses [kg], totals since the run began, per outlet patch:"
+        " emitted, singlets, agglomerates, onCarriers, fine"
+    );
+    writeCommented(os, "Time");
+    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+    for (const label patchi : patches_.sortedToc())
+    {
+        for (const word q : {"emitted", "singlets", "agglomerates",
+                             "onCarriers", "fine"})
+        {
+            writeTabbed(os, pbm[patchi].name() + ':' + q);
+        }
+    }
+    os  << endl;
+}
+
+
+void Foam::functionObjects::dpiEmittedDose::writeSizesHeader(Ostream& os)
+{
+    writeHeader
+    (
+        os,
+        "Emitted dose of cloud " + cloudName_ + " by agglomerate size"
+    );
+    writeHeader
+    (
+        os,
+        "API masses [kg] that left through the outlets, totals since the"
+        " run began, by the API primaries in one copy of the agglomerate"
+        " they left in; last column: on carriers"
+    );
+    writeCommented(os, "Time");
+    label lower = 1;
+    for (const label upper : sizeClasses_)
+    {
+        writeTabbed
+        (
+            os,
+            upper == lower
+          ? Foam::name(upper)
+          : Foam::name(lower) + '-' + Foam::name(upper)
+        );
+        lower = upper + 1;
+    }
+    writeTabbed(os, Foam::name(lower) + '+');
+    writeTabbed(os, "onCarriers");
+    os  << endl;
+}
+
+
+Foam::label Foam::functionObjects::dpiEmittedDose::sizeClass
+(
+    const label n
+) const
+{
+    forAll(sizeClasses_, k)
+    {
+        if (n <= sizeClasses_[k])
+        {
+            return k;
+        }
+    }
+    return sizeClasses_.size();
+}
+
+
+void Foam::functionObjects::dpiEmittedDose::readState()
+{
+    const FixedList<scalar*, 7> t(fields(total_));
+    forAll(t, k)
+    {
+        *t[k] = getProperty<scalar>(keys[k], 0);
+    }
+
+    // Per outlet by the patch's name: a restart that names other outlets
+    // counts the new ones from zero
+    dictionary outlets;
+    getDict("outlets", outlets);
+    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+    const labelList ids(patches_.sortedToc());
+    perOutlet_.setSize(ids.size());
+    forAll(ids, i)
+    {
+        const dictionary* d = outlets.findDict(pbm[ids[i]].name());
+        const FixedList<scalar*, 7> f(fields(perOutlet_[i]));
+        forAll(f, k)
+        {
+            *f[k] = d ? d->lookupOrDefault<scalar>(keys[k], 0) : 0;
+        }
+    }
+
+    // By size, if the classes are those of the run restarted
+    bySize_ = scalarList(sizeClasses_.size() + 2, Zero);
+    const labelList before(getProperty<labelList>("sizeClasses", labelList()));
+    if (before == sizeClasses_)
+    {
+        dictionary d;
+        getDict("bySize", d);
+        forAll(bySize_, k)
+        {
+            bySize_[k] = d.lookupOrDefault<scalar>(word("class" + Foam::name(k)), 0);
+        }
+    }
+    else if (before.size())
+    {
+        Info<< type() << ' ' << name() << ": sizeClasses " << sizeClasses_
+            << " differ from the restarted run's " << before
+            << ": sizes.dat counts from this start" << endl;
+    }
+}
+
+
+void Foam::functionObjects::dpiEmittedDose::writeState()
+{
+    const FixedList<scalar*, 7> t(fields(total_));
+    forAll(t, k)
+    {
+        setProperty(keys[k], *t[k]);
+    }
+
+    dictionary outlets;
+    const polyBoundaryMesh& pbm = mesh_.boundaryMesh();
+    const labelList ids(patches_.sortedToc());
+    forAll(ids, i)
+    {
+        // Scalars one by one: a list in the state is written at a lower
+        // precision, and a restart would not go on with the same sums
+        dictionary d;
+        const FixedList<scalar*, 7> f(fields(perOutlet_[i]));
+        forAll(f, k)
+        {
+            d.add(keys[k], *f[k]);
+        }
+        outlets.add(pbm[ids[i]].name(), d);
+    }
+    setProperty("outlets", outlets);
+
+    setProperty("sizeClasses", sizeClasses_);
+    dictionary bySize;
+    forAll(bySize_, k)
+    {
+        bySize.add(word("class" + Foam::name(k)), bySize_[k]);
+    }
+    setProperty("bySize", bySize);
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::functionObjects::dpiEmittedDose::dpiEmittedDose
@@ -97,20 +307,22 @@ Foam::functionObjects::dpiEmittedDose::dpiEmittedDose
     patches_(),
     cutOff_(5e-6),
     shapeFactor_(1.15),
-    total_()
+    sizeClasses_(),
+    total_(),
+    perOutlet_(),
+    bySize_(),
+    outletsFile_(),
+    sizesFile_()
 {
     read(dict);
-
-    // The totals of the run this one restarts (none at a first start)
-    const FixedList<scalar*, 7> t(fields(total_));
-    forAll(t, k)
-    {
-        *t[k] = getProperty<scalar>(keys[k], 0);
-    }
 
     if (Pstream::master() && writeToFile())
     {
         writeFileHeader(file());
+        outletsFile_ = createFile("outlets");
+        writeOutletsHeader(outletsFile_());
+        sizesFile_ = createFile("sizes");
+        writeSizesHeader(sizesFile_());
     }
 }
 
@@ -183,6 +395,24 @@ bool Foam::functionObjects::dpiEmittedDose::read(const dictionary& dict)
             << " >= 1 (1 is a sphere)." << exit(FatalIOError);
     }
 
+    sizeClasses_ =
+        dict.lookupOrDefault<labelList>("sizeClasses", labelList({1, 2, 4, 8, 16, 32}));
+    forAll(sizeClasses_, k)
+    {
+        if (sizeClasses_[k] < 1 || (k && sizeClasses_[k] <= sizeClasses_[k-1]))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Function object " << name() << ": sizeClasses "
+                << sizeClasses_ << " must be increasing numbers of API"
+                << " primaries, from 1 (the upper bound of each class; the"
+                << " default (1 2 4 8 16 32))." << exit(FatalIOError);
+        }
+    }
+
+    // The totals so far, for the patches and classes now selected: those
+    // of the run this one restarts, or of this run before a re-read
+    readState();
+
     return true;
 }
 
@@ -193,8 +423,12 @@ bool Foam::functionObjects::dpiEmittedDose::execute()
         dpiCloudInterface::find(mesh_, cloudName_, name());
     const scalar pi6 = constant::mathematical::pi/6;
 
-    // The parcels that left in the last fluid step
+    // The parcels that left in the last fluid step: in total, per outlet
+    // and by size
+    const labelList ids(patches_.sortedToc());
     dose step;
+    List<dose> stepPerOutlet(ids.size());
+    scalarList stepBySize(bySize_.size(), Zero);
     for (const dpiCloudInterface::escapedParcel& e : c.escapedParcels())
     {
         if (!e.api)
@@ -202,41 +436,50 @@ bool Foam::functionObjects::dpiEmittedDose::execute()
             continue;
         }
         const scalar m = e.N*e.rho*pi6*pow3(e.d);
-        if (!patches_.found(e.patchi))
+        const label i = ids.find(e.patchi);
+        if (i < 0)
         {
             step.elsewhere += m;
             continue;
         }
-        step.emitted += m;
-        step.primaries += e.N;
-        if (e.onCarrier)
-        {
-            step.onCarriers += m;
-        }
-        else if (e.agglomerateParcels <= 1)
-        {
-            step.singlets += m;
-        }
-        else
-        {
-            step.agglomerates += m;
-        }
-        if (aerodynamicDiameter(e) < cutOff_)
-        {
-            step.fine += m;
-        }
+        const bool isFine = aerodynamicDiameter(e) < cutOff_;
+        step.add(m, e.N, e.onCarrier, e.agglomerateParcels, isFine);
+        stepPerOutlet[i].add(m, e.N, e.onCarrier, e.agglomerateParcels, isFine);
+        stepBySize
+        [
+            e.onCarrier
+          ? bySize_.size() - 1
+          : sizeClass(e.agglomerateParcels)
+        ] += m;
     }
 
     // Into the totals, over all processors, and into the state written
     // with the time directories (a restart goes on counting)
-    const FixedList<scalar*, 7> s(fields(step));
-    const FixedList<scalar*, 7> t(fields(total_));
-    forAll(t, k)
+    auto accumulate = [](dose& step, dose& total)
     {
-        reduce(*s[k], sumOp<scalar>());
-        *t[k] += *s[k];
-        setProperty(keys[k], *t[k]);
+        scalarList l(toList(step));
+        Pstream::listCombineGather(l, plusEqOp<scalar>());
+        Pstream::listCombineScatter(l);
+        fromList(l, step);
+        const FixedList<scalar*, 7> s(fields(step));
+        const FixedList<scalar*, 7> t(fields(total));
+        forAll(t, k)
+        {
+            *t[k] += *s[k];
+        }
+    };
+    accumulate(step, total_);
+    forAll(ids, i)
+    {
+        accumulate(stepPerOutlet[i], perOutlet_[i]);
     }
+    Pstream::listCombineGather(stepBySize, plusEqOp<scalar>());
+    Pstream::listCombineScatter(stepBySize);
+    forAll(bySize_, k)
+    {
+        bySize_[k] += stepBySize[k];
+    }
+    writeState();
 
     // The API still in the domain
     dpiCloudInterface::parcelSamples p;
@@ -271,6 +514,24 @@ bool Foam::functionObjects::dpiEmittedDose::execute()
             << token::TAB << ratio(total_.fine, loaded)
             << token::TAB << total_.primaries
             << endl;
+
+        OFstream& oos = outletsFile_();
+        writeCurrentTime(oos);
+        for (const dose& d : perOutlet_)
+        {
+            oos << token::TAB << d.emitted << token::TAB << d.singlets
+                << token::TAB << d.agglomerates << token::TAB << d.onCarriers
+                << token::TAB << d.fine;
+        }
+        oos << endl;
+
+        OFstream& sos = sizesFile_();
+        writeCurrentTime(sos);
+        for (const scalar m : bySize_)
+        {
+            sos << token::TAB << m;
+        }
+        sos << endl;
     }
 
     Log << type() << ' ' << name() << ": API emitted " << total_.emitted

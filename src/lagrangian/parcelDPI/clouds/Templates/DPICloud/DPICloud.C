@@ -1236,6 +1236,7 @@ void Foam::DPICloud<CloudType>::samples(parcelSamples& s) const
     s.agglomerateId.setSize(n);
     s.d.setSize(n);
     s.rho.setSize(n);
+    s.cell.setSize(n);
 
     label i = 0;
     for (const parcelType& p : *this)
@@ -1247,6 +1248,7 @@ void Foam::DPICloud<CloudType>::samples(parcelSamples& s) const
         s.agglomerateId[i] = p.agglomerateId();
         s.d[i] = p.d();
         s.rho[i] = p.rho();
+        s.cell[i] = p.cell();
         ++i;
     }
 }
