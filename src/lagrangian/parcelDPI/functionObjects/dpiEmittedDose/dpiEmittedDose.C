@@ -53,7 +53,7 @@ namespace
         };
     }
 
-    //- A dose as a list and back (for a reduction)
+    //- A dose as a list (for a reduction)
     Foam::scalarList toList(Foam::functionObjects::dpiEmittedDose::dose& d)
     {
         const Foam::FixedList<Foam::scalar*, 7> f(fields(d));
@@ -63,19 +63,6 @@ namespace
             l[k] = *f[k];
         }
         return l;
-    }
-
-    void fromList
-    (
-        const Foam::scalarList& l,
-        Foam::functionObjects::dpiEmittedDose::dose& d
-    )
-    {
-        const Foam::FixedList<Foam::scalar*, 7> f(fields(d));
-        forAll(f, k)
-        {
-            *f[k] = l[k];
-        }
     }
 }
 
@@ -453,31 +440,33 @@ bool Foam::functionObjects::dpiEmittedDose::execute()
         ] += m;
     }
 
-    // Into the totals, over all processors, and into the state written
+    // Into the totals, over all processors in one reduction (the step's
+    // total, each outlet's, the size classes), and into the state written
     // with the time directories (a restart goes on counting)
-    auto accumulate = [](dose& step, dose& total)
+    DynamicList<scalar> sums(toList(step));
+    for (dose& d : stepPerOutlet)
     {
-        scalarList l(toList(step));
-        Pstream::listCombineGather(l, plusEqOp<scalar>());
-        Pstream::listCombineScatter(l);
-        fromList(l, step);
-        const FixedList<scalar*, 7> s(fields(step));
-        const FixedList<scalar*, 7> t(fields(total));
-        forAll(t, k)
+        sums.append(toList(d));
+    }
+    sums.append(stepBySize);
+    Pstream::listCombineGather(sums, plusEqOp<scalar>());
+    Pstream::listCombineScatter(sums);
+    label next = 0;
+    auto addTo = [&sums, &next](dose& total)
+    {
+        for (scalar* t : fields(total))
         {
-            *t[k] += *s[k];
+            *t += sums[next++];
         }
     };
-    accumulate(step, total_);
-    forAll(ids, i)
+    addTo(total_);
+    for (dose& d : perOutlet_)
     {
-        accumulate(stepPerOutlet[i], perOutlet_[i]);
+        addTo(d);
     }
-    Pstream::listCombineGather(stepBySize, plusEqOp<scalar>());
-    Pstream::listCombineScatter(stepBySize);
-    forAll(bySize_, k)
+    for (scalar& m : bySize_)
     {
-        bySize_[k] += stepBySize[k];
+        m += sums[next++];
     }
     writeState();
 
