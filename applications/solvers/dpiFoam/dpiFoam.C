@@ -186,7 +186,7 @@ int main(int argc, char *argv[])
     Info<< "Constructing cloud " << cloudName << endl;
     // The stock KinematicCloud builds its sub-models before dpiFoam's
     // cloud can look at them: say first where a DPMFoam-style model goes
-    basicDPICloud::checkStockModels
+    runStartCheck::stockModels
     (
         IOdictionary
         (

@@ -349,4 +349,56 @@ Foam::labelHashSet Foam::restartCheck::globalIds
 }
 
 
+void Foam::restartCheck::checkHistory
+(
+    const label id,
+    labelField& keys,
+    vectorField& xi,
+    const labelHashSet& all,
+    const label nIssued,
+    const label nWalls,
+    const word& timeName,
+    string& reason,
+    label& nDropped
+)
+{
+    label n = 0;
+    forAll(keys, k)
+    {
+        const label key = keys[k];
+        const bool isWall = key < 0;
+        const label wall = isWall ? (-1 - key) % 128 : -1;
+        if
+        (
+            reason.empty()
+         && ((!isWall && key >= nIssued) || (isWall && wall >= nWalls))
+        )
+        {
+            reason =
+                "Parcel " + Foam::name(id) + " at time "
+              + timeName + " has a contact history with "
+              + (
+                    isWall
+                  ? "wall " + Foam::name(wall) + ", but dem/walls has "
+                    + Foam::name(nWalls)
+                  : "parcel " + Foam::name(key) + ", but only "
+                    + Foam::name(nIssued) + " ids were issued"
+                )
+              + ": the contactKeys field was edited or belongs to"
+              + " another case.";
+        }
+        if (!isWall && !all.found(key))
+        {
+            ++nDropped;
+            continue;
+        }
+        keys[n] = key;
+        xi[n] = xi[k];
+        ++n;
+    }
+    keys.setSize(n);
+    xi.setSize(n);
+}
+
+
 // ************************************************************************* //

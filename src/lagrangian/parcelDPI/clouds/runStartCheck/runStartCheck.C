@@ -124,4 +124,61 @@ void Foam::runStartCheck::meshDimensions(const polyMesh& mesh)
 }
 
 
+void Foam::runStartCheck::stockModels(const dictionary& cloudDict)
+{
+    // KinematicCloud reads its sub-models (and needs the four model keys),
+    // but dpiFoam's parcels are moved by the DEM: a stock model named there
+    // would do nothing or, for injection, add parcels without a DEM type or
+    // id. A DPMFoam user's habit gets a message saying where the dpiFoam
+    // model goes (doc/models.md)
+    const dictionary sub(cloudDict.subOrEmptyDict("subModels"));
+
+    struct stock { const char* key; bool isDict; const char* instead; };
+    const stock models[] =
+    {
+        {"injectionModels", true,
+            "injectors { <name> { type singleParticles | regionPacking; ..."
+            " } } at the top level of the cloud dictionary"},
+        {"particleForces", true,
+            "fluidCoupling { forces { wenYuParcel {} pressureGradient {} } }"},
+        {"dispersionModel", false,
+            "fluidCoupling { turbulentDispersion { ... } } (the LES subgrid"
+            " velocity)"},
+        {"patchInteractionModel", false,
+            "dem { walls { <name> { type patch; patches (...); material"
+            " ...; } } } (walls are DEM contacts)"},
+        {"stochasticCollisionModel", false,
+            "dem { normalModel ...; tangentialModel ...; } (every contact"
+            " is resolved by the DEM)"},
+        {"surfaceFilmModel", false, "nothing: dpiFoam has no surface film"}
+    };
+
+    for (const stock& m : models)
+    {
+        bool named = false;
+        word what;
+        if (m.isDict)
+        {
+            const dictionary* d = sub.findDict(m.key);
+            named = d && d->size();
+            what = named ? word(d->toc()[0]) : word::null;
+        }
+        else if (sub.found(m.key))
+        {
+            what = sub.get<word>(m.key);
+            named = (what != "none");
+        }
+        if (named)
+        {
+            FatalIOErrorInFunction(sub)
+                << "subModels/" << m.key << " names " << what << " in "
+                << sub.name() << ", a stock KinematicCloud model that"
+                << " dpiFoam does not use (its parcels are moved by the DEM)."
+                << nl << "    Leave it " << (m.isDict ? "empty ({})" : "none")
+                << " and use " << m.instead << exit(FatalIOError);
+        }
+    }
+}
+
+
 // ************************************************************************* //

@@ -504,6 +504,40 @@ Foam::scalar Foam::demEngine::interactionReach(const scalar rMax) const
 }
 
 
+void Foam::demEngine::haloReach
+(
+    const demState& s,
+    const scalar Dt,
+    scalar& range,
+    scalar& margin
+) const
+{
+    // The contact radii: parcels that meet each other at grown radii
+    // (coarseGrainingModel) reach that far
+    scalar rMax = materials_.coarseGraining().maxRadius(s.r, s.typeId);
+    scalar vMax = 0;
+    for (label row = 0; row < s.size(); ++row)
+    {
+        vMax = max(vMax, mag(s.v[row]));
+    }
+    reduce(rMax, maxOp<scalar>());
+    reduce(vMax, maxOp<scalar>());
+
+    range = interactionReach(rMax);
+
+    // Enough for the fluid step while the parcels are slow (both parcels
+    // of a pair travelling towards each other, 1.5 x the fastest speed for
+    // moderate acceleration), so the halo is built once per fluid step; at
+    // most one Verlet skin, past which the halo is built again within the
+    // fluid step (processorHalo) rather than take in the fastest parcel's
+    // travel over the whole of it. One skin: the halo is then built about
+    // as often as that parcel's own travel rebuilds the neighbour lists
+    // (half a skin); of 0.5, 1 and 2 skins it was the fastest on the
+    // full-size inhaler's spray
+    margin = min(2*1.5*vMax*Dt, neighbours().skin());
+}
+
+
 void Foam::demEngine::evaluateForces(demState& s)
 {
     checkState(s);

@@ -8,12 +8,14 @@ License
 Description
     demEngine's checks of the state it is given and of the state it leaves:
     the coarsening factors and types before a fluid step, the travel per
-    DEM step and a non-finite state after it; the order of the pair sweep
-    asked for, and the keys that give it.
+    DEM step and a non-finite state after it, the fluid step's overlaps
+    and approach speeds (checkStep; the start's: demEngineStartCheck.C);
+    the order of the pair sweep asked for, and the keys that give it.
 
 \*---------------------------------------------------------------------------*/
 
 #include "demEngine.H"
+#include "PstreamReduceOps.H"
 #include <cmath>
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -137,6 +139,113 @@ void Foam::demEngine::checkEndState(const demState& s)
         }
     }
 }
+
+
+void Foam::demEngine::checkStep(const word& t)
+{
+    const demDiagnostics& d = diagnostics();
+
+    // The largest values over all processors, with the contact of the
+    // processor that holds them (ties: the largest ids, the same anywhere)
+    auto worst = [](const scalar local, const label pair[2], labelPair& ids)
+    {
+        const scalar global = returnReduce(local, maxOp<scalar>());
+        ids = labelPair(labelMin, labelMin);
+        if (local == global)
+        {
+            ids = labelPair(pair[0], pair[1]);
+        }
+        reduce(ids.first(), maxOp<label>());
+        reduce(ids.second(), maxOp<label>());
+        return global;
+    };
+    labelPair overlapIds, approachIds;
+    const scalar overlap = worst(d.stepMaxOverlapRatio, d.overlapPair, overlapIds);
+    const scalar approach = worst(d.stepMaxApproach, d.approachPair, approachIds);
+
+    auto contactName = [this](const labelPair& ids)
+    {
+        const label b = ids.second();
+        return
+            "parcel " + Foam::name(ids.first())
+          + (
+                b >= 0
+              ? " with parcel " + Foam::name(b)
+              : " with wall " + walls()[-1 - b].name()
+            );
+    };
+
+    const scalar vMax = maxImpactVelocity();
+
+    const scalar travel = returnReduce(d.stepMaxTravel, maxOp<scalar>());
+    if (travel > 1)
+    {
+        const label id = returnReduce
+        (
+            d.stepMaxTravel == travel ? d.travelId : labelMin,
+            maxOp<label>()
+        );
+        FatalErrorInFunction
+            << "At time " << t << " parcel " << id << " moves "
+            << travel << " radii per DEM step (|v| dem/timeStep / r): it"
+            << " can cross a wall or another parcel between two steps"
+            << " without any contact being seen." << nl
+            << "    Check what drives it (the time step was checked for"
+            << " timeStepCheck/maxImpactVelocity " << vMax << " m/s), or"
+            << " lower dem/timeStep. The last written time is intact."
+            << exit(FatalError);
+    }
+
+    if (overlap > overlapRefuse())
+    {
+        FatalErrorInFunction
+            << "At time " << t << " the contact of "
+            << contactName(overlapIds).c_str() << " reached an overlap of "
+            << overlap << " R*, above dem/overlapCheck/refuse "
+            << overlapRefuse() << ": the contact is far outside"
+            << " what Hertz contact describes, and a little more takes a"
+            << " parcel through its partner." << nl
+            << "    The fastest approach in this fluid step was " << approach
+            << " m/s"
+            << (
+                   approachIds.first() >= 0
+                 ? " (" + contactName(approachIds) + ")"
+                 : std::string()
+               ).c_str()
+            << "; the time step was checked for"
+            << " timeStepCheck/maxImpactVelocity "
+            << vMax << " m/s. Check the speeds and forces that drive it"
+            << " (gravity, cohesion, drag), raise maxImpactVelocity to what"
+            << " the scene reaches (the start-up check then says whether"
+            << " dem/timeStep and the stiffness resolve it), or raise"
+            << " dem/overlapCheck/refuse to go on. The last written time is"
+            << " intact." << exit(FatalError);
+    }
+    if (overlap > overlapWarn() && overlap > 2*warnedOverlap_)
+    {
+        WarningInFunction
+            << "At time " << t << " the contact of "
+            << contactName(overlapIds).c_str() << " reached an overlap of "
+            << overlap << " R*, above dem/overlapCheck/warn "
+            << overlapWarn() << " (Hertz contact assumes small"
+            << " overlaps; the run stops at refuse "
+            << overlapRefuse() << "). Said again if it doubles."
+            << endl;
+        warnedOverlap_ = overlap;
+    }
+    if (approach > vMax && approach > 2*warnedApproach_)
+    {
+        WarningInFunction
+            << "At time " << t << " " << contactName(approachIds).c_str()
+            << " approached at " << approach << " m/s, above"
+            << " timeStepCheck/maxImpactVelocity " << vMax << " m/s that"
+            << " the time step and overlaps were checked for at start-up:"
+            << " raise it to what the scene reaches. Said again if it"
+            << " doubles." << endl;
+        warnedApproach_ = approach;
+    }
+}
+
 
 
 // ************************************************************************* //

@@ -7,7 +7,9 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "DPICloud.H"
-#include "writtenTimes.H"
+#include "meshDomain.H"
+#include "demPartition.H"
+#include "cloudRecord.H"
 #include "restartCheck.H"
 #include "ListOps.H"
 #include "PstreamCombineReduceOps.H"
@@ -19,64 +21,6 @@ License
 #include "OSspecific.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-template<class CloudType>
-void Foam::DPICloud<CloudType>::checkStockModels(const dictionary& cloudDict)
-{
-    // KinematicCloud reads its sub-models (and needs the four model keys),
-    // but dpiFoam's parcels are moved by the DEM: a stock model named there
-    // would do nothing or, for injection, add parcels without a DEM type or
-    // id. A DPMFoam user's habit gets a message saying where the dpiFoam
-    // model goes (doc/models.md)
-    const dictionary sub(cloudDict.subOrEmptyDict("subModels"));
-
-    struct stock { const char* key; bool isDict; const char* instead; };
-    const stock models[] =
-    {
-        {"injectionModels", true,
-            "injectors { <name> { type singleParticles | regionPacking; ..."
-            " } } at the top level of the cloud dictionary"},
-        {"particleForces", true,
-            "fluidCoupling { forces { wenYuParcel {} pressureGradient {} } }"},
-        {"dispersionModel", false,
-            "fluidCoupling { turbulentDispersion { ... } } (the LES subgrid"
-            " velocity)"},
-        {"patchInteractionModel", false,
-            "dem { walls { <name> { type patch; patches (...); material"
-            " ...; } } } (walls are DEM contacts)"},
-        {"stochasticCollisionModel", false,
-            "dem { normalModel ...; tangentialModel ...; } (every contact"
-            " is resolved by the DEM)"},
-        {"surfaceFilmModel", false, "nothing: dpiFoam has no surface film"}
-    };
-
-    for (const stock& m : models)
-    {
-        bool named = false;
-        word what;
-        if (m.isDict)
-        {
-            const dictionary* d = sub.findDict(m.key);
-            named = d && d->size();
-            what = named ? word(d->toc()[0]) : word::null;
-        }
-        else if (sub.found(m.key))
-        {
-            what = sub.get<word>(m.key);
-            named = (what != "none");
-        }
-        if (named)
-        {
-            FatalIOErrorInFunction(sub)
-                << "subModels/" << m.key << " names " << what << " in "
-                << sub.name() << ", a stock KinematicCloud model that"
-                << " dpiFoam does not use (its parcels are moved by the DEM)."
-                << nl << "    Leave it " << (m.isDict ? "empty ({})" : "none")
-                << " and use " << m.instead << exit(FatalIOError);
-        }
-    }
-}
-
 
 template<class CloudType>
 void Foam::DPICloud<CloudType>::setModels()
@@ -94,8 +38,6 @@ void Foam::DPICloud<CloudType>::setModels()
             "dem", "injectors", "fluidCoupling", "trace", "agglomerates"
         }
     );
-
-    checkStockModels(props);
 
     if (!props.found("dem"))
     {
@@ -127,30 +69,17 @@ void Foam::DPICloud<CloudType>::setModels()
     const dictionary& demDict = props.subDict("dem");
     if (demPartition::selected(demDict))
     {
-        partition_.reset(new demPartition(demDict, engine_(), this->mesh()));
+        domain_.reset(new demPartition(demDict, engine_(), this->mesh()));
     }
-    else if (Pstream::parRun())
+    else
     {
-        halo_.reset(new processorHalo(this->mesh()));
-        engine_->setHalo(halo_.get(), true);
+        domain_.reset(new meshDomain(engine_(), this->mesh()));
     }
 
-    injectors_.clear();
-    if (props.found("injectors"))
-    {
-        const dictionary& injDict = props.subDict("injectors");
-        const wordList names(injDict.toc());
-        injectors_.setSize(names.size());
-        forAll(names, i)
-        {
-            injectors_.set
-            (
-                i,
-                dpiInjectionModel::New(names[i], injDict.subDict(names[i]), &engine_->materials())
-            );
-        }
-        checkInjectorBounds(injDict);
-    }
+    injectors_.reset
+    (
+        new dpiInjectors(props, this->mesh(), engine_->materials())
+    );
 
     if (props.found("trace"))
     {
@@ -179,50 +108,13 @@ void Foam::DPICloud<CloudType>::setModels()
         );
     }
 
-    if (Pstream::master())
-    {
-        // postProcessing/<cloud>/<name>/<startTime>/<name>.dat
-        const Time& time = this->mesh().time();
-        auto series = [&](const word& name, const label digits)
-        {
-            const fileName dir
-            (
-                time.globalPath()/"postProcessing"/this->name()/name
-               /time.timeName()
-            );
-            mkDir(dir);
-            autoPtr<OFstream> file(new OFstream(dir/(name + ".dat")));
-            file().precision(digits);
-            return file;
-        };
-
-        diagFile_ = series("demDiagnostics", 10);
-        diagFile_()
-            << "# DEM diagnostics at the end of every fluid step" << nl
-            << "# time kineticEnergy[J] rotationalEnergy[J] nPairContacts"
-            << " nWallContacts maxOverlap/R* nParcels" << nl;
-
-        perfFile_ = series("demPerformance", 8);
-        perfFile_()
-            << "# DEM cost on the master processor at the end of every"
-            << " fluid step: wall-clock seconds since this run started,"
-            << " summed (as the log's DEM performance line)" << nl
-            << "# time subSteps pair wall neighbour integrate haloExchange"
-            << " subStepFluidForces searches nearBuilds" << nl;
-
-        if (engine_->contactStats())
-        {
-            statsFile_ = series("contactStatistics", 10);
-            engine_->contactStats()->writeHeader(statsFile_());
-        }
-    }
-
-    balance_.reset
+    reports_.reset
     (
-        new parcelBalance
+        new demReports
         (
-            this->mesh().time().globalPath()/"postProcessing"/this->name()
-           /"parcelBalance"/this->mesh().time().timeName()
+            engine_(),
+            this->mesh().time().globalPath()/"postProcessing"/this->name(),
+            this->mesh().time().timeName()
         )
     );
 }
@@ -270,77 +162,10 @@ void Foam::DPICloud<CloudType>::readCloudFields()
         return;
     }
 
-    const Time& time = this->db().time();
-    const fileName cloudDir(time.timeName()/cloud::prefix/this->name());
-    const bool decomposedToo =
-        isDir(time.globalPath()/"processor0"/time.timeName());
-    // (collective in parallel, where a processor may stop here alone)
-    const word last
+    cloudRecord::refuseMissingFields
     (
-        Pstream::parRun()
-      ? word::null
-      : writtenTimes::lastComplete(time.path(), time.value(), this->name())
+        this->db().time(), this->name(), missing
     );
-    FatalIOErrorInFunction(time.controlDict())
-        << "The restart time " << time.timeName() << " (startFrom/startTime"
-        << " in " << time.controlDict().name() << ") has the parcels of"
-        << " cloud " << this->name() << " but not all their fields: "
-        << stringOps::trim(missing).c_str() << nl;
-    if (decomposedToo && !Pstream::parRun())
-    {
-        FatalIOError
-            << "    The time was reconstructed from processor0/"
-            << time.timeName() << " ...: reconstructPar without a"
-            << " lagrangian field selection leaves out the contact"
-            << " histories (contactKeys, contactXi). Run reconstructPar"
-            << " -time " << time.timeName() << " -lagrangianFields"
-            << " '(\".*\")', or restart in parallel from the processor"
-            << " directories";
-    }
-    else
-    {
-        FatalIOError
-            << "    The cloud's files in " << cloudDir << " were deleted or"
-            << " not copied (every field a run writes is needed)";
-        if (last.size())
-        {
-            FatalIOError
-                << "; restore them, or restart from " << last
-                << " (startFrom startTime; startTime " << last << ";)";
-        }
-    }
-    FatalIOError<< exit(FatalIOError);
-}
-
-
-template<class CloudType>
-void Foam::DPICloud<CloudType>::checkInjectorBounds
-(
-    const dictionary& injDict
-) const
-{
-    // Before any packing: a region outside the mesh would otherwise be
-    // packed first and fail on what the packing cannot reach, never
-    // naming the mesh (the parcels' own positions are checked against the
-    // mesh's cells when injected)
-    const boundBox& meshBb = this->mesh().bounds();
-    boundBox grown(meshBb);
-    grown.inflate(1e-9);
-    forAll(injectors_, i)
-    {
-        const boundBox bb(injectors_[i].bounds());
-        if (bb.valid() && !grown.contains(bb))
-        {
-            FatalIOErrorInFunction(injDict.subDict(injectors_[i].name()))
-                << "Injector " << injectors_[i].name() << " in "
-                << injDict.name() << " places its particles in "
-                << bb.min() << ' ' << bb.max() << ", outside the mesh"
-                << " (bounds " << meshBb.min() << ' ' << meshBb.max()
-                << ")." << nl << "    Move its positions or region"
-                << " inside the mesh (lengths in metres)"
-                << exit(FatalIOError);
-        }
-    }
 }
 
 
@@ -354,56 +179,13 @@ void Foam::DPICloud<CloudType>::readState()
 
     nextGlobalId_ = dpiDict.lookupOrDefault<label>("nextGlobalId", 0);
 
-    const Time& time = this->db().time();
     const label nParcels = returnReduce(this->size(), sumOp<label>());
-
-    // Parcels without the state written with them (uniform/ deleted or
-    // not copied): the models, the type table and the ids issued are
-    // unknown, and nothing below could be checked
-    const bool stateMissing = !this->outputProperties().found("dpiCloud");
-    if (nParcels && returnReduce(stateMissing, orOp<bool>()))
-    {
-        const word last
-        (
-            writtenTimes::lastComplete(time.path(), time.value(), this->name())
-        );
-        FatalIOErrorInFunction(this->outputProperties())
-            << "Time " << time.timeName() << " has " << nParcels
-            << " parcels of cloud " << this->name() << " but not the cloud"
-            << " state written with them ("
-            << this->outputProperties().objectPath() << " is missing)."
-            << nl << "    Without it the models, the type table and the"
-            << " ids issued are unknown and a restart cannot be checked."
-            << " Restore " << time.timeName() << "/uniform (written with"
-            << " every time; decomposePar and reconstructPar copy it)";
-        if (last.size())
-        {
-            FatalIOError<< " or restart from " << last;
-        }
-        FatalIOError<< "." << exit(FatalIOError);
-    }
-
-    // A restart may change material and model coefficients, not the
-    // choice of models: the state written (histories, forces) belongs to
-    // the models that wrote it
     const dictionary& demDict = this->particleProperties().subDict("dem");
-    const dictionary written(dpiDict.subOrEmptyDict("models"));
-    for (const word& key : written.toc())
-    {
-        const word before(written.get<word>(key));
-        const word now(demDict.get<word>(key));
-        if (before != now)
-        {
-            FatalIOErrorInFunction(demDict)
-                << "Restart with " << key << " " << now << " in dictionary "
-                << demDict.name() << ", but the state at time "
-                << this->db().time().timeName() << " was written with "
-                << key << " " << before << "." << nl
-                << "    A restart may change the models' coefficients, not"
-                << " the models: set " << key << " " << before << ";"
-                << exit(FatalIOError);
-        }
-    }
+    cloudRecord::checkState
+    (
+        this->outputProperties(), demDict, this->db().time(), this->name(),
+        nParcels
+    );
 
     if (nParcels)
     {
@@ -424,7 +206,13 @@ void Foam::DPICloud<CloudType>::readState()
         Pstream::master() ? dpiDict.subOrEmptyDict("escaped") : dictionary()
     );
 
-    checkCloudPresent(nextGlobalId_);
+    // The counters live on the master (escapeRecord::read)
+    cloudRecord::checkCloudPresent
+    (
+        this->outputProperties(), this->particleProperties(),
+        this->db().time(), this->name(), nParcels, nextGlobalId_,
+        escapes_.nGone(), !injectors_->empty()
+    );
 }
 
 
@@ -476,44 +264,11 @@ void Foam::DPICloud<CloudType>::checkRestartCloud(const dictionary& dpiDict)
     string reason;
     for (parcelType& p : *this)
     {
-        labelField& keys = p.contactKeys();
-        vectorField& xi = p.contactXi();
-        label n = 0;
-        forAll(keys, k)
-        {
-            const label key = keys[k];
-            const bool isWall = key < 0;
-            const label wall = isWall ? (-1 - key) % 128 : -1;
-            if
-            (
-                reason.empty()
-             && ((!isWall && key >= nIssued) || (isWall && wall >= nWalls))
-            )
-            {
-                reason =
-                    "Parcel " + Foam::name(p.globalId()) + " at time "
-                  + timeName + " has a contact history with "
-                  + (
-                        isWall
-                      ? "wall " + Foam::name(wall) + ", but dem/walls has "
-                        + Foam::name(nWalls)
-                      : "parcel " + Foam::name(key) + ", but only "
-                        + Foam::name(nIssued) + " ids were issued"
-                    )
-                  + ": the contactKeys field was edited or belongs to"
-                  + " another case.";
-            }
-            if (!isWall && !all.found(key))
-            {
-                ++nDropped;
-                continue;
-            }
-            keys[n] = key;
-            xi[n] = xi[k];
-            ++n;
-        }
-        keys.setSize(n);
-        xi.setSize(n);
+        restartCheck::checkHistory
+        (
+            p.globalId(), p.contactKeys(), p.contactXi(), all, nIssued,
+            nWalls, timeName, reason, nDropped
+        );
     }
 
     restartCheck::refuseIfAny(reason, this->outputProperties());
@@ -527,60 +282,6 @@ void Foam::DPICloud<CloudType>::checkRestartCloud(const dictionary& dpiDict)
 }
 
 
-template<class CloudType>
-void Foam::DPICloud<CloudType>::checkCloudPresent(const label nIssued) const
-{
-    // A start time without parcels is legitimate (injection ahead, or the
-    // gas alone), unless the state written with that time says parcels were
-    // issued and did not all leave: then the cloud was not written or not
-    // reconstructed, and going on would silently run without the powder
-    const label nParcels = returnReduce(this->size(), sumOp<label>());
-    if (nParcels > 0)
-    {
-        return;
-    }
-
-    // The counters live on the master (readState)
-    const label nGone = escapes_.nGone();
-
-    const Time& time = this->db().time();
-    const word cloudDir(time.timeName()/cloud::prefix/this->name());
-    if (nIssued > nGone)
-    {
-        // Never advise going on without the cloud: name the latest time
-        // that has it (a parallel run's times may need reconstructing)
-        const word last
-        (
-            writtenTimes::lastComplete(time.path(), time.value(), this->name())
-        );
-        FatalIOErrorInFunction(this->outputProperties())
-            << "Time " << time.timeName() << " has no parcels of"
-            << " cloud " << this->name() << " (" << cloudDir << "/positions"
-            << " not found or empty), but the cloud state in "
-            << this->outputProperties().objectPath() << " says " << nIssued
-            << " parcels were issued and " << nGone << " left the domain."
-            << nl << "    Restart from a time written with the cloud";
-        if (last.size())
-        {
-            FatalIOError
-                << ": the latest before this one is " << last
-                << " (startFrom startTime; startTime " << last << ";)";
-        }
-        FatalIOError
-            << ". After a parallel run, reconstructPar -lagrangianFields"
-            << " '(\".*\")' writes the cloud into the case's times."
-            << exit(FatalIOError);
-    }
-
-    if (injectors_.empty())
-    {
-        WarningInFunction
-            << "No parcels at time " << this->db().time().timeName()
-            << " (" << cloudDir << " is empty or missing) and no injectors in "
-            << this->particleProperties().name()
-            << ": the cloud stays empty" << endl;
-    }
-}
 
 
 template<class CloudType>
@@ -589,17 +290,11 @@ void Foam::DPICloud<CloudType>::storeCounters()
     dictionary dpiDict;
     dpiDict.add("nextGlobalId", nextGlobalId_);
 
-    dictionary models;
-    const dictionary& demDict = this->particleProperties().subDict("dem");
-    for
+    dpiDict.add
     (
-        const word key
-      : {"normalModel", "tangentialModel", "rollingModel", "cohesionModel"}
-    )
-    {
-        models.add(key, demDict.get<word>(key));
-    }
-    dpiDict.add("models", models);
+        "models",
+        cloudRecord::models(this->particleProperties().subDict("dem"))
+    );
 
     // The type table a restart checks the parcels against (restartCheck)
     if (engine_.valid())
@@ -631,80 +326,18 @@ Foam::label Foam::DPICloud<CloudType>::inject
     const scalar t1
 )
 {
-    const demMaterials& mat = engine_->materials();
-
     // The injection's own time in the log: the set-up figure of a run
     // holds it among the mesh, the fields and the first fluid step
     const clockTime timer;
 
-    // The curve's cell for `order morton`: the largest particle
-    const scalar dMax = mat.maxDiameter();
-
     DynamicList<injectionSpec> specs;
-    forAll(injectors_, i)
-    {
-        const label start = specs.size();
-        injectors_[i].inject(t0, t1, specs);
-        injectors_[i].order(specs, start, dMax);
-    }
-
-    if (returnReduce(specs.empty(), andOp<bool>()))
+    labelList owner, cell, typeIds;
+    if (!injectors_->due(t0, t1, specs, owner, cell, typeIds))
     {
         return 0;
     }
 
-    const fvMesh& mesh = this->mesh();
-
-    // Owner processor of each position: local octree search, then one
-    // element-wise min over processors (lowest processor wins, so the owner
-    // does not depend on search order)
-    const label notFound = Pstream::nProcs();
-    labelList owner(specs.size(), notFound);
-    labelList cell(specs.size(), -1);
-    forAll(specs, i)
-    {
-        cell[i] = mesh.findCell(specs[i].position);
-        if (cell[i] >= 0)
-        {
-            owner[i] = Pstream::myProcNo();
-        }
-    }
-    Pstream::listCombineGather(owner, minEqOp<label>());
-    Pstream::listCombineScatter(owner);
-
-    forAll(specs, i)
-    {
-        if (owner[i] == notFound)
-        {
-            FatalIOErrorInFunction(this->particleProperties())
-                << "A particle of type " << specs[i].type
-                << " is injected at " << specs[i].position
-                << ", outside the mesh (bounds " << mesh.bounds() << ")." << nl
-                << "    Check 'injectors' in " << this->particleProperties().name()
-                << exit(FatalIOError);
-        }
-    }
-
-    // Types are checked on every processor so that all stop together
-    const dictionary& injDict = this->particleProperties().subDict("injectors");
-    forAll(specs, i)
-    {
-        const label typei = mat.typeIndex(specs[i].type, injDict, "type");
-        if (!mat.isParticleType(typei))
-        {
-            const fileName typeDict
-            (
-                injDict.parent().name() + ".dem.types." + specs[i].type
-            );
-            FatalIOErrorInFunction(injDict)
-                << "Injected type " << specs[i].type << " has no 'diameter'"
-                << " in dictionary " << typeDict.c_str() << ": a type"
-                << " without one is a wall material." << nl
-                << "    Give type " << specs[i].type << " a diameter and a"
-                << " density to inject it" << exit(FatalIOError);
-        }
-    }
-
+    const demMaterials& mat = engine_->materials();
     forAll(specs, i)
     {
         const injectionSpec& s = specs[i];
@@ -717,9 +350,9 @@ Foam::label Foam::DPICloud<CloudType>::inject
             continue;
         }
 
-        const label typei = mat.typeIndex(s.type, injDict, "type");
+        const label typei = typeIds[i];
 
-        parcelType* pPtr = new parcelType(mesh, s.position, cell[i]);
+        parcelType* pPtr = new parcelType(this->mesh(), s.position, cell[i]);
         parcelType& p = *pPtr;
 
         p.typeId() = typei;
@@ -810,9 +443,9 @@ void Foam::DPICloud<CloudType>::copyToState(const bool contactForcesValid)
     // With the DEM's own partition the histories travel with the rows
     // every fluid step: the parcels' lists are moved, not copied, to the
     // partition (which gives them to the engine), and come back with
-    // the rows (demPartition::collect), so a history is held once while
-    // the DEM runs
-    if (partition_.valid())
+    // the rows (demDomain::end), so a history is held once while the DEM
+    // runs
+    if (domain_->historiesTravel())
     {
         rowKeys_.setSize(state_.size());
         rowXi_.setSize(state_.size());
@@ -849,245 +482,6 @@ void Foam::DPICloud<CloudType>::copyToState(const bool contactForcesValid)
 }
 
 
-template<class CloudType>
-void Foam::DPICloud<CloudType>::copyFromState()
-{
-    DynamicList<label> keys;
-    DynamicList<vector> xi;
-
-    label i = 0;
-    for (parcelType& p : *this)
-    {
-        setParcel
-        (
-            p, state_.x[i], state_.v[i], state_.omega[i],
-            state_.fContact[i], state_.tContact[i], agglomerateIds_[i]
-        );
-        keys.clear();
-        xi.clear();
-        engine_->history(p.globalId(), keys, xi);
-        p.contactKeys() = keys;
-        p.contactXi() = xi;
-        ++i;
-    }
-}
-
-
-template<class CloudType>
-void Foam::DPICloud<CloudType>::checkContacts()
-{
-    const demDiagnostics& d = engine_->diagnostics();
-
-    // The largest values over all processors, with the contact of the
-    // processor that holds them (ties: the largest ids, the same anywhere)
-    auto worst = [](const scalar local, const label pair[2], labelPair& ids)
-    {
-        const scalar global = returnReduce(local, maxOp<scalar>());
-        ids = labelPair(labelMin, labelMin);
-        if (local == global)
-        {
-            ids = labelPair(pair[0], pair[1]);
-        }
-        reduce(ids.first(), maxOp<label>());
-        reduce(ids.second(), maxOp<label>());
-        return global;
-    };
-    labelPair overlapIds, approachIds;
-    const scalar overlap = worst(d.stepMaxOverlapRatio, d.overlapPair, overlapIds);
-    const scalar approach = worst(d.stepMaxApproach, d.approachPair, approachIds);
-
-    auto contactName = [this](const labelPair& ids)
-    {
-        const label b = ids.second();
-        return
-            "parcel " + Foam::name(ids.first())
-          + (
-                b >= 0
-              ? " with parcel " + Foam::name(b)
-              : " with wall " + engine_->walls()[-1 - b].name()
-            );
-    };
-
-    const scalar vMax = engine_->maxImpactVelocity();
-    const word t(this->db().time().timeName());
-
-    const scalar travel = returnReduce(d.stepMaxTravel, maxOp<scalar>());
-    if (travel > 1)
-    {
-        const label id = returnReduce
-        (
-            d.stepMaxTravel == travel ? d.travelId : labelMin,
-            maxOp<label>()
-        );
-        FatalErrorInFunction
-            << "At time " << t << " parcel " << id << " moves "
-            << travel << " radii per DEM step (|v| dem/timeStep / r): it"
-            << " can cross a wall or another parcel between two steps"
-            << " without any contact being seen." << nl
-            << "    Check what drives it (the time step was checked for"
-            << " timeStepCheck/maxImpactVelocity " << vMax << " m/s), or"
-            << " lower dem/timeStep. The last written time is intact."
-            << exit(FatalError);
-    }
-
-    if (overlap > engine_->overlapRefuse())
-    {
-        FatalErrorInFunction
-            << "At time " << t << " the contact of "
-            << contactName(overlapIds).c_str() << " reached an overlap of "
-            << overlap << " R*, above dem/overlapCheck/refuse "
-            << engine_->overlapRefuse() << ": the contact is far outside"
-            << " what Hertz contact describes, and a little more takes a"
-            << " parcel through its partner." << nl
-            << "    The fastest approach in this fluid step was " << approach
-            << " m/s"
-            << (
-                   approachIds.first() >= 0
-                 ? " (" + contactName(approachIds) + ")"
-                 : std::string()
-               ).c_str()
-            << "; the time step was checked for"
-            << " timeStepCheck/maxImpactVelocity "
-            << vMax << " m/s. Check the speeds and forces that drive it"
-            << " (gravity, cohesion, drag), raise maxImpactVelocity to what"
-            << " the scene reaches (the start-up check then says whether"
-            << " dem/timeStep and the stiffness resolve it), or raise"
-            << " dem/overlapCheck/refuse to go on. The last written time is"
-            << " intact." << exit(FatalError);
-    }
-    if (overlap > engine_->overlapWarn() && overlap > 2*warnedOverlap_)
-    {
-        WarningInFunction
-            << "At time " << t << " the contact of "
-            << contactName(overlapIds).c_str() << " reached an overlap of "
-            << overlap << " R*, above dem/overlapCheck/warn "
-            << engine_->overlapWarn() << " (Hertz contact assumes small"
-            << " overlaps; the run stops at refuse "
-            << engine_->overlapRefuse() << "). Said again if it doubles."
-            << endl;
-        warnedOverlap_ = overlap;
-    }
-    if (approach > vMax && approach > 2*warnedApproach_)
-    {
-        WarningInFunction
-            << "At time " << t << " " << contactName(approachIds).c_str()
-            << " approached at " << approach << " m/s, above"
-            << " timeStepCheck/maxImpactVelocity " << vMax << " m/s that"
-            << " the time step and overlaps were checked for at start-up:"
-            << " raise it to what the scene reaches. Said again if it"
-            << " doubles." << endl;
-        warnedApproach_ = approach;
-    }
-}
-
-
-template<class CloudType>
-void Foam::DPICloud<CloudType>::writeDiagnostics()
-{
-    const demDiagnostics& d = engine_->diagnostics();
-
-    const scalar ke = returnReduce(d.kineticEnergy, sumOp<scalar>());
-    const scalar re = returnReduce(d.rotationalEnergy, sumOp<scalar>());
-    const label nPair = returnReduce(d.nPairContacts, sumOp<label>());
-    const label nWall = returnReduce(d.nWallContacts, sumOp<label>());
-    const scalar maxOverlap = returnReduce(d.maxOverlapRatio, maxOp<scalar>());
-    const label nParcels = returnReduce(this->size(), sumOp<label>());
-
-    if (diagFile_.valid())
-    {
-        diagFile_()
-            << this->db().time().value() << ' ' << ke << ' ' << re
-            << ' ' << nPair << ' ' << nWall << ' ' << maxOverlap
-            << ' ' << nParcels << endl;
-    }
-
-    if (perfFile_.valid())
-    {
-        const demEngine& e = engine_();
-        perfFile_()
-            << this->db().time().value() << ' ' << e.nSteps()
-            << ' ' << e.timePair() << ' ' << e.timeWall()
-            << ' ' << e.timeNeighbour() << ' ' << e.timeIntegrate()
-            << ' ' << e.timeHalo() << ' ' << e.timeExternal()
-            << ' ' << e.neighbours().nBuilds() << ' ' << e.nNearBuilds()
-            << endl;
-    }
-
-    if (const contactStatistics* stats = engine_->contactStats())
-    {
-        // collective: every processor's counts go to the master
-        stats->write
-        (
-            this->db().time().value(),
-            statsFile_.valid() ? statsFile_() : Snull
-        );
-    }
-
-    balance_->sample
-    (
-        this->db().time().value(),
-        partition_.valid() ? partition_->nDemOwned() : state_.owned(),
-        partition_.valid() ? partition_->nDemRows() : state_.size(),
-        d.nPairContacts
-    );
-
-    checkContacts();
-
-    Info<< "    DEM: " << engine_->nSteps() << " sub-steps so far"
-        << ", contacts (pair, wall) = (" << nPair << ", " << nWall << ")"
-        << ", max overlap/R* = " << maxOverlap
-        << ", kinetic energy = " << ke << ", rotational = " << re << nl;
-
-    // Collective builds: the same counts on every processor
-    const processorHalo* halo =
-        partition_.valid() ? &partition_->halo() : halo_.get();
-    if (halo)
-    {
-        Info<< "    DEM halo: " << halo->nGhosts() << " ghost rows on the "
-            << "master, " << halo->nBuilds() << " builds so far, "
-            << halo->nRebuilds() << " of them within a fluid step" << nl;
-    }
-}
-
-
-template<class CloudType>
-void Foam::DPICloud<CloudType>::haloReach
-(
-    const scalar Dt,
-    scalar& range,
-    scalar& margin
-) const
-{
-    // The contact radii: parcels that meet each other at grown radii
-    // (coarseGrainingModel) reach that far
-    scalar rMax =
-        engine_->materials().coarseGraining().maxRadius
-        (
-            state_.r, state_.typeId
-        );
-    scalar vMax = 0;
-    for (label row = 0; row < state_.size(); ++row)
-    {
-        vMax = max(vMax, mag(state_.v[row]));
-    }
-    reduce(rMax, maxOp<scalar>());
-    reduce(vMax, maxOp<scalar>());
-
-    range = engine_->interactionReach(rMax);
-
-    // Enough for the fluid step while the parcels are slow (both parcels
-    // of a pair travelling towards each other, 1.5 x the fastest speed for
-    // moderate acceleration), so the halo is built once per fluid step; at
-    // most one Verlet skin, past which the halo is built again within the
-    // fluid step (processorHalo) rather than take in the fastest parcel's
-    // travel over the whole of it. One skin: the halo is then built about
-    // as often as that parcel's own travel rebuilds the neighbour lists
-    // (half a skin); of 0.5, 1 and 2 skins it was the fastest on the
-    // full-size inhaler's spray (tutorials/inhaler/README.md)
-    margin = min(2*1.5*vMax*Dt, engine_->neighbours().skin());
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -1102,28 +496,7 @@ Foam::DPICloud<CloudType>::DPICloud
 )
 :
     CloudType(cloudName, rho, U, mu, g, false),
-    cloudCopyPtr_(nullptr),
-    engine_(nullptr),
-    injectors_(),
-    nextGlobalId_(0),
-    state_(),
-    startChecked_(false),
-    historyLoaded_(false),
-    observer_(nullptr),
-    trace_(nullptr),
-    diagFile_(nullptr),
-    perfFile_(nullptr),
-    statsFile_(nullptr),
-    agglomerates_(nullptr),
-    halo_(nullptr),
-    partition_(nullptr),
-    rowKeys_(),
-    rowXi_(),
-    balance_(nullptr),
-    agglomerateIds_(),
-    escapes_(this->mesh().boundaryMesh()),
-    escapeComposition_(),
-    escapedThisStep_()
+    escapes_(this->mesh().boundaryMesh())
 {
     if (this->solution().active())
     {
@@ -1148,28 +521,8 @@ Foam::DPICloud<CloudType>::DPICloud
 )
 :
     CloudType(c, name),
-    cloudCopyPtr_(nullptr),
-    engine_(nullptr),
-    injectors_(),
     nextGlobalId_(c.nextGlobalId_),
-    state_(),
-    startChecked_(false),
-    historyLoaded_(false),
-    observer_(nullptr),
-    trace_(nullptr),
-    diagFile_(nullptr),
-    perfFile_(nullptr),
-    statsFile_(nullptr),
-    agglomerates_(nullptr),
-    halo_(nullptr),
-    partition_(nullptr),
-    rowKeys_(),
-    rowXi_(),
-    balance_(nullptr),
-    agglomerateIds_(),
-    escapes_(c.escapes_),
-    escapeComposition_(),
-    escapedThisStep_()
+    escapes_(c.escapes_)
 {}
 
 
@@ -1182,28 +535,8 @@ Foam::DPICloud<CloudType>::DPICloud
 )
 :
     CloudType(mesh, name, c),
-    cloudCopyPtr_(nullptr),
-    engine_(nullptr),
-    injectors_(),
     nextGlobalId_(c.nextGlobalId_),
-    state_(),
-    startChecked_(false),
-    historyLoaded_(false),
-    observer_(nullptr),
-    trace_(nullptr),
-    diagFile_(nullptr),
-    perfFile_(nullptr),
-    statsFile_(nullptr),
-    agglomerates_(nullptr),
-    halo_(nullptr),
-    partition_(nullptr),
-    rowKeys_(),
-    rowXi_(),
-    balance_(nullptr),
-    agglomerateIds_(),
-    escapes_(this->mesh().boundaryMesh()),
-    escapeComposition_(),
-    escapedThisStep_()
+    escapes_(this->mesh().boundaryMesh())
 {}
 
 
@@ -1346,9 +679,51 @@ void Foam::DPICloud<CloudType>::evolve()
 
 
 template<class CloudType>
-void Foam::DPICloud<CloudType>::fluidStep
+Foam::word Foam::DPICloud<CloudType>::startCheckDue(const label nInjected)
+{
+    // The start (or restart) and every injection: no parcel inside another
+    // or a wall, no parcel without size (a collective decision, on the DEM
+    // rows with their halo)
+    if (!nInjected && startChecked_)
+    {
+        return word::null;
+    }
+    const word when(startChecked_ ? "injected" : "at the start");
+    startChecked_ = true;
+
+    // A traced id no parcel carries would trace nothing, silently
+    if (trace_.valid())
+    {
+        labelList ids(this->size());
+        label i = 0;
+        for (const parcelType& p : *this)
+        {
+            ids[i++] = p.globalId();
+        }
+        trace_->warnAbsent
+        (
+            ids, nextGlobalId_, this->db().time().timeName()
+        );
+    }
+    return when;
+}
+
+
+template<class CloudType>
+Foam::demObserver* Foam::DPICloud<CloudType>::stepObserver(const scalar t0)
+{
+    if (!observer_ && trace_.valid())
+    {
+        trace_->beginStep(t0, engine_->timeStep());
+        return trace_.get();
+    }
+    return observer_;
+}
+
+
+template<class CloudType>
+void Foam::DPICloud<CloudType>::subSteps
 (
-    demStepper& stepper,
     const scalar Dt,
     const vector& g,
     demObserver* obs,
@@ -1356,81 +731,47 @@ void Foam::DPICloud<CloudType>::fluidStep
     List<scalarField>& scaOut
 )
 {
-    if (!coupling_->active())
-    {
-        stepper.evolve(state_, Dt, g, obs);
-        return;
-    }
-
-    coupling_->sample(*this, state_);
-
+    demState& rows = domain_->rows();
     if (!coupling_->subStepForces())
     {
-        coupling_->setHeldForces(state_, Dt);
-        stepper.evolve(state_, Dt, g, obs);
+        engine_->evolve(rows, Dt, g, obs);
         return;
     }
 
-    List<vectorField> vecIn;
-    List<scalarField> scaIn;
-    coupling_->packStates(vecIn, scaIn);
-    subSteps
-    (
-        stepper, state_, coupling_->nRows(), vecIn, scaIn, vecOut, scaOut,
-        Dt, g, obs
-    );
-}
-
-
-template<class CloudType>
-void Foam::DPICloud<CloudType>::finishFluidStep
-(
-    const List<vectorField>& vecOut,
-    const List<scalarField>& scaOut,
-    const scalar Dt
-)
-{
-    if (!coupling_->active())
-    {
-        return;
-    }
-    if (coupling_->subStepForces())
-    {
-        coupling_->finishSubSteps(*this, vecOut, scaOut);
-    }
-    else
-    {
-        coupling_->finishHeld(*this, Dt);
-    }
-}
-
-
-template<class CloudType>
-void Foam::DPICloud<CloudType>::subSteps
-(
-    demStepper& stepper,
-    demState& s,
-    const label n,
-    const List<vectorField>& vecIn,
-    const List<scalarField>& scaIn,
-    List<vectorField>& vecOut,
-    List<scalarField>& scaOut,
-    const scalar Dt,
-    const vector& g,
-    demObserver* obs
-)
-{
     // One engine call for the fluid step; the hook sets the forces before
     // every sub-step
     autoPtr<dpiSubStepForces> forces
     (
         coupling_->newSubStepForces
         (
-            n, vecIn, scaIn, stepper.timeStep(), stepper.nSubSteps(Dt)
+            rows.owned(), domain_->vectorColumns(), domain_->scalarColumns(),
+            engine_->timeStep(), engine_->nSubSteps(Dt)
         )
     );
-    stepper.evolve(s, Dt, g, obs, forces.get());
+    engine_->evolve(rows, Dt, g, obs, forces.get());
     coupling_->subStepResults(forces(), vecOut, scaOut);
+}
+
+
+template<class CloudType>
+void Foam::DPICloud<CloudType>::composeEscapes()
+{
+    const label n = this->size();
+    labelList ids(n);
+    scalarList d(n), rho(n);
+    boolList carrier(n);
+    const demMaterials& mat = engine_->materials();
+    label i = 0;
+    for (const parcelType& p : *this)
+    {
+        ids[i] = p.agglomerateId();
+        d[i] = p.d();
+        rho[i] = p.rho();
+        carrier[i] = !mat.api(p.typeId());
+        ++i;
+    }
+    escapeComposition_ = agglomerateTracker::compose(ids, d, rho, carrier);
+    escapedThisStep_.clear();
 }
 
 
@@ -1442,178 +783,73 @@ void Foam::DPICloud<CloudType>::motion
     typename parcelType::trackingData& td
 )
 {
-    const Time& time = this->db().time();
-    const scalar Dt = time.deltaTValue();
-    const scalar t1 = time.value();
-
-    const label nInjected = inject(t1 - Dt, t1);
-
-    copyToState(nInjected == 0);
-    if (!partition_.valid())
-    {
-        // (the DEM's own partition orders its rows: demPartition)
-        orderParcels();
-    }
-
-    // The start (or restart) and every injection: no parcel inside another
-    // or a wall, no parcel without size (a collective decision, on the DEM
-    // rows with their halo)
-    word checkWhen;
-    if (nInjected || !startChecked_)
-    {
-        checkWhen = startChecked_ ? "injected" : "at the start";
-        startChecked_ = true;
-
-        // A traced id no parcel carries would trace nothing, silently
-        if (trace_.valid())
-        {
-            labelList ids(this->size());
-            label i = 0;
-            for (const parcelType& p : *this)
-            {
-                ids[i++] = p.globalId();
-            }
-            trace_->warnAbsent(ids, nextGlobalId_, time.timeName());
-        }
-    }
-
-    demObserver* obs = observer_;
-    if (!obs && trace_.valid())
-    {
-        trace_->beginStep(t1 - Dt, engine_->timeStep());
-        obs = trace_.get();
-    }
-
+    const scalar Dt = this->db().time().deltaTValue();
+    const scalar t1 = this->db().time().value();
     const vector g(this->g().value());
 
-    // The run-time check (checkContacts) looks at the whole fluid step,
-    // however many engine calls it takes (one per sub-step with the forces
-    // updated every sub-step)
+    // The parcels as the mesh rows, in list order
+    const label nInjected = inject(t1 - Dt, t1);
+    copyToState(nInjected == 0);
+    if (!domain_->ordersRows())
+    {
+        orderParcels();
+    }
+    const word checkWhen(startCheckDue(nInjected));
+    demObserver* obs = stepObserver(t1 - Dt);
+
+    // The run-time check (demEngine::checkStep) sees the whole fluid step
     engine_->resetStepDiagnostics();
 
-    List<vectorField> vecOut;
-    List<scalarField> scaOut;
-    if (partition_.valid())
-    {
-        // The DEM on its own partition: the rows (with their fluid forces,
-        // or with the frozen fluid states when the forces follow every
-        // sub-step) go to their DEM owners and back
-        scalar range, margin;
-        haloReach(Dt, range, margin);
-        partition_->setInputs(rowKeys_, rowXi_, range, margin, checkWhen);
-        if (coupling_->subStepForces())
-        {
-            coupling_->sample(*this, state_);
-            List<vectorField> vecIn;
-            List<scalarField> scaIn;
-            coupling_->packStates(vecIn, scaIn);
-            partition_->distribute(state_, vecIn, scaIn);
-            subSteps
-            (
-                engine_(), partition_->state(), partition_->state().owned(),
-                partition_->vectorColumns(), partition_->scalarColumns(),
-                vecOut, scaOut, Dt, g, obs
-            );
-        }
-        else
-        {
-            // held forces set here, the DEM sub-steps at the DEM owners
-            fluidStep(*partition_, Dt, g, obs, vecOut, scaOut);
-        }
+    // The gas at the parcels: held forces, or the states the forces of
+    // every sub-step start from
+    List<vectorField> vecIn, vecOut, vecBack;
+    List<scalarField> scaIn, scaOut, scaBack;
+    coupling_->startFluidStep(*this, state_, Dt, vecIn, scaIn);
 
-        // Labelled where the DEM rows are, then every row straight back
-        // to its parcel (mesh row i is the i-th parcel of the list)
-        agglomerates_->update
-        (
-            partition_->state(),
-            engine_->materials(),
-            partition_->agglomerateIds(),
-            &partition_->halo()
-        );
-        List<parcelType*> parcels(this->size());
-        {
-            label i = 0;
-            for (parcelType& p : *this)
-            {
-                parcels[i++] = &p;
-            }
-        }
-        List<vectorField> vecBack;
-        List<scalarField> scaBack;
-        partition_->collect
-        (
-            state_,
-            [&parcels](const label i, demPartition::rowBack& row)
-            {
-                parcelType& p = *parcels[i];
-                setParcel
-                (
-                    p, row.x, row.v, row.omega, row.fContact, row.tContact,
-                    row.agglomerateId
-                );
-                p.contactKeys().transfer(row.keys);
-                p.contactXi().transfer(row.xi);
-            },
-            vecOut, scaOut, vecBack, scaBack
-        );
-        finishFluidStep(vecBack, scaBack, Dt);
+    // The rows to where the DEM runs, the start check there, the
+    // sub-steps, the agglomerates labelled, every row back to its parcel
+    scalar range = 0, margin = 0;
+    if (domain_->halo())
+    {
+        engine_->haloReach(state_, Dt, range, margin);
     }
-    else
+    domain_->begin(state_, vecIn, scaIn, rowKeys_, rowXi_, range, margin);
+    if (checkWhen.size())
     {
-        if (halo_.valid())
-        {
-            // The owners' contact histories travel with the ghosts at every
-            // build: a parcel new to this processor's halo brings the
-            // contacts it already has (walls included), so they continue
-            // here as they do at its owner
-            scalar range, margin;
-            haloReach(Dt, range, margin);
-            halo_->build(state_, range, margin, &engine_());
-            engine_->orderRows(state_, state_.owned());
-        }
-        if (checkWhen.size())
-        {
-            engine_->checkStartState(state_, checkWhen);
-        }
-
-        // DEM sub-steps with the fluid forces in state_.fExt, their
-        // reaction into UTrans/UCoeff
-        fluidStep(engine_(), Dt, g, obs, vecOut, scaOut);
-        finishFluidStep(vecOut, scaOut, Dt);
-
-        agglomerates_->update
-        (
-            state_,
-            engine_->materials(),
-            agglomerateIds_,
-            halo_.get()
-        );
-        copyFromState();
+        engine_->checkStartState(domain_->rows(), checkWhen);
     }
-    agglomerates_->write(t1);
-
-    writeDiagnostics();
-
-    // What the agglomerates are made of, for the parcels this move
-    // carries out
+    subSteps(Dt, g, obs, vecOut, scaOut);
+    agglomerates_->update
+    (
+        domain_->rows(), engine_->materials(), domain_->agglomerateIds(),
+        domain_->halo()
+    );
+    List<parcelType*> parcels(this->size());
     {
-        const label n = this->size();
-        labelList ids(n);
-        scalarList d(n), rho(n);
-        boolList carrier(n);
-        const demMaterials& mat = engine_->materials();
         label i = 0;
-        for (const parcelType& p : *this)
+        for (parcelType& p : *this)
         {
-            ids[i] = p.agglomerateId();
-            d[i] = p.d();
-            rho[i] = p.rho();
-            carrier[i] = !mat.api(p.typeId());
-            ++i;
+            parcels[i++] = &p;
         }
-        escapeComposition_ = agglomerateTracker::compose(ids, d, rho, carrier);
-        escapedThisStep_.clear();
     }
+    domain_->end
+    (
+        state_,
+        [&parcels](const label i, demDomain::rowBack& row)
+        {
+            setParcel(*parcels[i], row);
+        },
+        vecOut, scaOut, vecBack, scaBack
+    );
+    coupling_->finishFluidStep(*this, vecBack, scaBack, Dt);
+
+    agglomerates_->write(t1);
+    reports_->write
+    (
+        engine_(), *domain_, t1, returnReduce(this->size(), sumOp<label>())
+    );
+    engine_->checkStep(this->db().time().timeName());
+    composeEscapes();
 
     // Relocate every parcel to its DEM position: one tracking pass, which
     // also hands parcels over to neighbouring processors

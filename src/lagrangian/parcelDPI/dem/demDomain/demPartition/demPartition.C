@@ -387,7 +387,6 @@ Foam::demPartition::demPartition
     xi_(nullptr),
     range_(0),
     margin_(0),
-    checkWhen_(),
     vecCols_(),
     scaCols_()
 {
@@ -536,20 +535,22 @@ void Foam::demPartition::inRounds
 }
 
 
-void Foam::demPartition::setInputs
+void Foam::demPartition::begin
 (
+    demState& meshRows,
+    List<vectorField>& vecIn,
+    List<scalarField>& scaIn,
     List<labelList>& keys,
     List<List<vector>>& xi,
     const scalar range,
-    const scalar margin,
-    const word& checkWhen
+    const scalar margin
 )
 {
     keys_ = &keys;
     xi_ = &xi;
     range_ = range;
     margin_ = margin;
-    checkWhen_ = checkWhen;
+    distribute(meshRows, vecIn, scaIn);
 }
 
 
@@ -806,12 +807,6 @@ void Foam::demPartition::distribute
 
     halo_.build(dem_, range_, margin_, &engine_);
     engine_.orderRows(dem_, nOwned);
-
-    if (checkWhen_.size())
-    {
-        engine_.checkStartState(dem_, checkWhen_);
-        checkWhen_.clear();
-    }
 }
 
 
@@ -966,23 +961,6 @@ void Foam::demPartition::collect
     nDemRows_ = dem_.size();
     meshRows.transfer(dem_);
     meshRows.clear();
-}
-
-
-void Foam::demPartition::evolve
-(
-    demState& s,
-    const scalar Dt,
-    const vector& g,
-    demObserver* obs,
-    demSubStepForces* ext
-)
-{
-    List<vectorField> noVectors;
-    List<scalarField> noScalars;
-    distribute(s, noVectors, noScalars);
-
-    engine_.evolve(dem_, Dt, g, obs, ext);
 }
 
 

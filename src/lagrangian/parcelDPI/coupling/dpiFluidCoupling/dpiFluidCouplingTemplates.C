@@ -351,6 +351,56 @@ void Foam::dpiFluidCoupling::correctParcels
 
 
 template<class CloudType>
+void Foam::dpiFluidCoupling::startFluidStep
+(
+    const CloudType& cloud,
+    demState& s,
+    const scalar Dt,
+    List<vectorField>& vecIn,
+    List<scalarField>& scaIn
+)
+{
+    if (!active())
+    {
+        return;
+    }
+    sample(cloud, s);
+    if (subStepForces())
+    {
+        packStates(vecIn, scaIn);
+    }
+    else
+    {
+        setHeldForces(s, Dt);
+    }
+}
+
+
+template<class CloudType>
+void Foam::dpiFluidCoupling::finishFluidStep
+(
+    CloudType& cloud,
+    const List<vectorField>& vecBack,
+    const List<scalarField>& scaBack,
+    const scalar Dt
+)
+{
+    if (!active())
+    {
+        return;
+    }
+    if (subStepForces())
+    {
+        finishSubSteps(cloud, vecBack, scaBack);
+    }
+    else
+    {
+        finishHeld(cloud, Dt);
+    }
+}
+
+
+template<class CloudType>
 void Foam::dpiFluidCoupling::finishSubSteps
 (
     CloudType& cloud,
@@ -360,11 +410,16 @@ void Foam::dpiFluidCoupling::finishSubSteps
 {
     for (label i = 0; i < nRows_; ++i)
     {
-        fluid_[i].Uturb = vecOut[1][i];
+        fluid_[i].Uturb = vecOut[fluidColumns::uStar][i];
     }
 
     // The fluid step's impulse of each parcel, spread once
-    addSources(cloud, vecOut[0], scaOut[0]);
+    addSources
+    (
+        cloud,
+        vecOut[fluidColumns::impulse],
+        scaOut[fluidColumns::spImpulse]
+    );
 
     endFluidStep(cloud);
 }

@@ -42,18 +42,19 @@ Foam::dpiSubStepForces::dpiSubStepForces
     impulse_(n, Zero),
     spImpulse_(n, 0)
 {
+    namespace col = fluidColumns;
     for (label i = 0; i < n; ++i)
     {
         dpiFluidForce::fluidState& fl = fluid_[i];
-        fl.U = vecIn[0][i];
-        fl.Uturb = vecIn[1][i];
-        fl.gradp = vecIn[2][i];
-        fl.alpha = scaIn[0][i];
-        fl.rho = scaIn[1][i];
-        fl.nu = scaIn[2][i];
-        sgs_[i].k = scaIn[3][i];
-        sgs_[i].tau = scaIn[4][i];
-        fl.gasFree = (scaIn[5][i] > 0.5);
+        fl.U = vecIn[col::U][i];
+        fl.Uturb = vecIn[col::Uturb][i];
+        fl.gradp = vecIn[col::gradp][i];
+        fl.alpha = scaIn[col::alpha][i];
+        fl.rho = scaIn[col::rho][i];
+        fl.nu = scaIn[col::nu][i];
+        sgs_[i].k = scaIn[col::k][i];
+        sgs_[i].tau = scaIn[col::tau][i];
+        fl.gasFree = (scaIn[col::gasFree][i] > 0.5);
     }
 
     // u* held over at most a tenth of its time scale (see the header)

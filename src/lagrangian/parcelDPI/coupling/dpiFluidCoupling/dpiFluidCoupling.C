@@ -214,8 +214,9 @@ void Foam::dpiFluidCoupling::packStates
     List<scalarField>& sca
 ) const
 {
-    vec.setSize(3);
-    sca.setSize(6);
+    namespace col = fluidColumns;
+    vec.setSize(col::nFrozenVectors);
+    sca.setSize(col::nFrozenScalars);
     for (vectorField& c : vec)
     {
         c.setSize(nRows_);
@@ -227,18 +228,18 @@ void Foam::dpiFluidCoupling::packStates
     for (label i = 0; i < nRows_; ++i)
     {
         const dpiFluidForce::fluidState& fl = fluid_[i];
-        vec[0][i] = fl.U;
-        vec[1][i] = fl.Uturb;
-        vec[2][i] = fl.gradp;
-        sca[0][i] = fl.alpha;
-        sca[1][i] = fl.rho;
-        sca[2][i] = fl.nu;
+        vec[col::U][i] = fl.U;
+        vec[col::Uturb][i] = fl.Uturb;
+        vec[col::gradp][i] = fl.gradp;
+        sca[col::alpha][i] = fl.alpha;
+        sca[col::rho][i] = fl.rho;
+        sca[col::nu][i] = fl.nu;
         if (dispersion_.valid())
         {
-            sca[3][i] = sgs_[i].k;
-            sca[4][i] = sgs_[i].tau;
+            sca[col::k][i] = sgs_[i].k;
+            sca[col::tau][i] = sgs_[i].tau;
         }
-        sca[5][i] = fl.gasFree ? 1 : 0;
+        sca[col::gasFree][i] = fl.gasFree ? 1 : 0;
     }
 }
 
@@ -277,12 +278,12 @@ void Foam::dpiFluidCoupling::subStepResults
     List<scalarField>& scaOut
 ) const
 {
-    // Out: the coupled impulse sum dt Fc and u* (vectors), sum dt Sp
-    vecOut.setSize(2);
-    vecOut[0] = f.impulse();
-    vecOut[1] = f.uStar();
-    scaOut.setSize(1);
-    scaOut[0] = f.spImpulse();
+    namespace col = fluidColumns;
+    vecOut.setSize(col::nResultVectors);
+    vecOut[col::impulse] = f.impulse();
+    vecOut[col::uStar] = f.uStar();
+    scaOut.setSize(col::nResultScalars);
+    scaOut[col::spImpulse] = f.spImpulse();
 }
 
 
