@@ -7,167 +7,12 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "DPICloud.H"
-#include "meshDomain.H"
-#include "demPartition.H"
 #include "cloudRecord.H"
 #include "restartCheck.H"
-#include "ListOps.H"
 #include "PstreamCombineReduceOps.H"
-#include "mathematicalConstants.H"
 #include "clockTime.H"
-#include "dictKeys.H"
-#include "mortonOrder.H"
-#include "stringOps.H"
-#include "OSspecific.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-template<class CloudType>
-void Foam::DPICloud<CloudType>::setModels()
-{
-    const dictionary& props = this->particleProperties();
-
-    // The top-level keys: those the stock KinematicCloud reads (solution,
-    // constantProperties, subModels, cloudFunctions), then those read here
-    // and by dpiFluidCoupling. Each reader below checks its own dictionary
-    dictKeys::warnUnknown
-    (
-        props,
-        {
-            "solution", "constantProperties", "subModels", "cloudFunctions",
-            "dem", "injectors", "fluidCoupling", "trace", "agglomerates"
-        }
-    );
-
-    if (!props.found("dem"))
-    {
-        FatalIOErrorInFunction(props)
-            << "Missing sub-dictionary 'dem' in " << props.name() << nl
-            << "    it holds the DEM time step, materials and contact models"
-            << exit(FatalIOError);
-    }
-
-    // The engine's own keys first, so that a typo is named before a
-    // reader stops on the entry it misses
-    demEngine::warnUnknownKeys(props.subDict("dem"));
-    engine_.reset(new demEngine(props.subDict("dem"), &this->mesh()));
-    engine_->setTime(this->mesh().time().value());
-
-    // Gas-particle forces: none unless fluidCoupling/forces
-    coupling_.reset
-    (
-        new dpiFluidCoupling
-        (
-            props, this->mesh(), this->U(), this->rho(), this->mu(),
-            engine_->materials()
-        )
-    );
-
-    // Parallel: the DEM either on its own partition of the parcels (load
-    // balanced, dem/loadBalance rcb, the default) or on the mesh owners
-    // with a halo of the mesh sub-domains' boxes
-    const dictionary& demDict = props.subDict("dem");
-    if (demPartition::selected(demDict))
-    {
-        domain_.reset(new demPartition(demDict, engine_(), this->mesh()));
-    }
-    else
-    {
-        domain_.reset(new meshDomain(engine_(), this->mesh()));
-    }
-
-    injectors_.reset
-    (
-        new dpiInjectors(props, this->mesh(), engine_->materials())
-    );
-
-    if (props.found("trace"))
-    {
-        const Time& time = this->mesh().time();
-        trace_.reset
-        (
-            new demTrace
-            (
-                props.subDict("trace"),
-                time.globalPath()/"postProcessing"/this->name()/"trace"
-               /time.timeName()
-            )
-        );
-    }
-
-    {
-        const Time& time = this->mesh().time();
-        agglomerates_.reset
-        (
-            new agglomerateTracker
-            (
-                props.subOrEmptyDict("agglomerates"),
-                time.globalPath()/"postProcessing"/this->name()/"agglomerates"
-               /time.timeName()
-            )
-        );
-    }
-
-    reports_.reset
-    (
-        new demReports
-        (
-            engine_(),
-            this->mesh().time().globalPath()/"postProcessing"/this->name(),
-            this->mesh().time().timeName()
-        )
-    );
-}
-
-
-template<class CloudType>
-void Foam::DPICloud<CloudType>::readCloudFields()
-{
-    // A missing field file is OpenFOAM's bare "cannot find file" (a
-    // FatalError): caught to say how such a time comes about and what to
-    // run. Any other error goes on as OpenFOAM reports it
-    const bool throwing = FatalError.throwExceptions();
-    const bool ioThrowing = FatalIOError.throwExceptions();
-    auto restore = [&]()
-    {
-        FatalError.throwExceptions(throwing);
-        FatalIOError.throwExceptions(ioThrowing);
-    };
-    string missing;
-    try
-    {
-        parcelType::readFields(*this);
-    }
-    catch (const IOerror& err)
-    {
-        restore();
-        IOerror other(err);
-        other.dontThrowExceptions();
-        other.exit();
-    }
-    catch (const error& err)
-    {
-        restore();
-        missing = err.message();
-        if (missing.find("cannot find file") == string::npos)
-        {
-            error other(err);
-            other.dontThrowExceptions();
-            other.exit();
-        }
-    }
-    restore();
-    if (missing.empty())
-    {
-        return;
-    }
-
-    cloudRecord::refuseMissingFields
-    (
-        this->db().time(), this->name(), missing
-    );
-}
-
 
 template<class CloudType>
 void Foam::DPICloud<CloudType>::readState()
@@ -189,7 +34,11 @@ void Foam::DPICloud<CloudType>::readState()
 
     if (nParcels)
     {
-        checkRestartCloud(dpiDict);
+        restartCheck::checkCloud
+        (
+            *this, dpiDict, demDict, engine().materials(),
+            engine().walls().size(), this->outputProperties()
+        );
     }
 
     // Parcels read from a restart carry their ids: never reissue one
@@ -211,77 +60,9 @@ void Foam::DPICloud<CloudType>::readState()
     (
         this->outputProperties(), this->particleProperties(),
         this->db().time(), this->name(), nParcels, nextGlobalId_,
-        escapes_.nGone(), !injectors_->empty()
+        escapes_.nGone(), !models_->injectors().empty()
     );
 }
-
-
-template<class CloudType>
-void Foam::DPICloud<CloudType>::checkRestartCloud(const dictionary& dpiDict)
-{
-    const word timeName(this->db().time().timeName());
-    const dictionary& demDict = this->particleProperties().subDict("dem");
-    const demMaterials& mat = engine_->materials();
-
-    labelList typeIds(this->size());
-    labelList ids(this->size());
-    scalarList ds(this->size()), Ns(this->size()), rhos(this->size());
-    label i = 0;
-    for (const parcelType& p : *this)
-    {
-        typeIds[i] = p.typeId();
-        ids[i] = p.globalId();
-        ds[i] = p.d();
-        Ns[i] = p.N();
-        rhos[i] = p.rho();
-        ++i;
-    }
-
-    // Types by name; what the parcels were made with unchanged
-    const labelList newIndex
-    (
-        restartCheck::mapTypes
-        (
-            dpiDict, demDict, mat, timeName, typeIds, ids, ds, Ns, rhos
-        )
-    );
-    if (newIndex.size())
-    {
-        for (parcelType& p : *this)
-        {
-            p.typeId() = newIndex[p.typeId()];
-        }
-    }
-
-    // Unique ids, and contact histories that name parcels and walls that
-    // exist. A partner that was issued but is gone (it left through an
-    // outlet in the step the time was written) is a finished contact:
-    // dropped. One never issued, or a wall not in dem/walls, is refused.
-    const labelHashSet all(restartCheck::globalIds(ids, timeName));
-    const label nIssued = dpiDict.lookupOrDefault<label>("nextGlobalId", 0);
-    const label nWalls = engine_->walls().size();
-    label nDropped = 0;
-    string reason;
-    for (parcelType& p : *this)
-    {
-        restartCheck::checkHistory
-        (
-            p.globalId(), p.contactKeys(), p.contactXi(), all, nIssued,
-            nWalls, timeName, reason, nDropped
-        );
-    }
-
-    restartCheck::refuseIfAny(reason, this->outputProperties());
-
-    reduce(nDropped, sumOp<label>());
-    if (nDropped)
-    {
-        Info<< "    Dropped " << nDropped << " contact histories with parcels"
-            << " that left the domain before time " << timeName << endl;
-    }
-}
-
-
 
 
 template<class CloudType>
@@ -297,7 +78,7 @@ void Foam::DPICloud<CloudType>::storeCounters()
     );
 
     // The type table a restart checks the parcels against (restartCheck)
-    if (engine_.valid())
+    if (models_.valid())
     {
         labelList typeIds(this->size());
         scalarList ds(this->size());
@@ -308,7 +89,7 @@ void Foam::DPICloud<CloudType>::storeCounters()
             ds[i] = p.d();
             ++i;
         }
-        restartCheck::writeTypes(dpiDict, engine_->materials(), typeIds, ds);
+        restartCheck::writeTypes(dpiDict, engine().materials(), typeIds, ds);
     }
 
     // Global sums, the same on every processor (readState gives them back
@@ -332,12 +113,12 @@ Foam::label Foam::DPICloud<CloudType>::inject
 
     DynamicList<injectionSpec> specs;
     labelList owner, cell, typeIds;
-    if (!injectors_->due(t0, t1, specs, owner, cell, typeIds))
+    if (!models_->injectors().due(t0, t1, specs, owner, cell, typeIds))
     {
         return 0;
     }
 
-    const demMaterials& mat = engine_->materials();
+    const demMaterials& mat = engine().materials();
     forAll(specs, i)
     {
         const injectionSpec& s = specs[i];
@@ -378,110 +159,6 @@ Foam::label Foam::DPICloud<CloudType>::inject
 }
 
 
-template<class CloudType>
-void Foam::DPICloud<CloudType>::orderParcels()
-{
-    engine_->orderRows(state_);
-    if (!engine_->alongCurve())
-    {
-        return;
-    }
-
-    // The pairs are swept in key order, so rows in that order are read one
-    // after the other and a row's partners lie near it in memory. The keys
-    // move only as parcels cross cells, and a reorder costs a neighbour
-    // build (the search sees new rows): a few rows out of place are left
-    const UList<uint64_t>& keys = state_.key;
-    if (mortonOrder::nDescents(keys) <= keys.size()/100)
-    {
-        return;
-    }
-
-    labelList order;
-    sortedOrder(keys, order);
-    state_.reorder(order);
-
-    // The parcels to the same order (relinked, not copied: each in turn to
-    // the list's end), so that the rows come in it at the next steps
-    List<parcelType*> parcels(this->size());
-    label i = 0;
-    for (parcelType& p : *this)
-    {
-        parcels[i++] = &p;
-    }
-    for (const label k : order)
-    {
-        this->append(this->remove(parcels[k]));
-    }
-}
-
-
-template<class CloudType>
-void Foam::DPICloud<CloudType>::copyToState(const bool contactForcesValid)
-{
-    state_.clear();
-    state_.reserve(this->size());
-
-    for (const parcelType& p : *this)
-    {
-        const label row = state_.append
-        (
-            p.xDEM(),
-            p.U(),
-            p.omega(),
-            0.5*p.d(),
-            p.primaryMass(),
-            p.N(),
-            p.typeId(),
-            p.globalId()
-        );
-        state_.fContact[row] = p.f();
-        state_.tContact[row] = p.torque();
-    }
-    state_.contactForcesValid = contactForcesValid;
-
-    // With the DEM's own partition the histories travel with the rows
-    // every fluid step: the parcels' lists are moved, not copied, to the
-    // partition (which gives them to the engine), and come back with
-    // the rows (demDomain::end), so a history is held once while the DEM
-    // runs
-    if (domain_->historiesTravel())
-    {
-        rowKeys_.setSize(state_.size());
-        rowXi_.setSize(state_.size());
-        label i = 0;
-        for (parcelType& p : *this)
-        {
-            rowKeys_[i].transfer(p.contactKeys());
-            rowXi_[i].transfer(p.contactXi());
-            ++i;
-        }
-        return;
-    }
-
-    // The engine keeps the histories between steps; the parcels' copies
-    // are loaded once, at the first step (a restart)
-    if (!historyLoaded_)
-    {
-        // The store sized once (it would otherwise grow by doubling,
-        // copying itself at each growth; measured on a 50,000 restart this
-        // does not move the run's peak memory)
-        label nContacts = 0;
-        for (const parcelType& p : *this)
-        {
-            nContacts += p.contactKeys().size();
-        }
-        engine_->reserveHistory(nContacts);
-
-        for (const parcelType& p : *this)
-        {
-            engine_->setHistory(p.globalId(), p.contactKeys(), p.contactXi());
-        }
-        historyLoaded_ = true;
-    }
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -500,11 +177,22 @@ Foam::DPICloud<CloudType>::DPICloud
 {
     if (this->solution().active())
     {
-        setModels();
+        models_.reset
+        (
+            new dpiCloudModels
+            (
+                this->particleProperties(), this->name(), this->mesh(),
+                this->U(), this->rho(), this->mu()
+            )
+        );
 
         if (readFields)
         {
-            readCloudFields();
+            cloudRecord::readFields
+            (
+                this->db().time(), this->name(),
+                [this]() { parcelType::readFields(*this); }
+            );
             this->deleteLostParticles();
         }
 
@@ -576,7 +264,7 @@ void Foam::DPICloud<CloudType>::samples(parcelSamples& s) const
     {
         s.position[i] = p.xDEM();
         s.N[i] = p.N();
-        s.api[i] = engine_.valid() && engine_->materials().api(p.typeId());
+        s.api[i] = models_.valid() && engine().materials().api(p.typeId());
         s.globalId[i] = p.globalId();
         s.agglomerateId[i] = p.agglomerateId();
         s.d[i] = p.d();
@@ -592,9 +280,9 @@ template<class CloudType>
 const Foam::tmp<Foam::volScalarField>
 Foam::DPICloud<CloudType>::theta() const
 {
-    if (coupling_.valid() && coupling_->voidFraction())
+    if (models_.valid() && fluidCoupling().voidFraction())
     {
-        return coupling_->voidFraction()->theta(*this);
+        return fluidCoupling().voidFraction()->theta(*this);
     }
     return CloudType::theta();
 }
@@ -615,7 +303,7 @@ void Foam::DPICloud<CloudType>::recordEscapedParcel
     escapedParcel e;
     e.patchi = pp.index();
     e.N = p.N();
-    e.api = engine_->materials().api(p.typeId());
+    e.api = engine().materials().api(p.typeId());
     e.d = p.d();
     e.rho = p.rho();
     e.agglomerateParcels = c.parcels.lookup(id, 1);
@@ -692,7 +380,7 @@ Foam::word Foam::DPICloud<CloudType>::startCheckDue(const label nInjected)
     startChecked_ = true;
 
     // A traced id no parcel carries would trace nothing, silently
-    if (trace_.valid())
+    if (models_->trace())
     {
         labelList ids(this->size());
         label i = 0;
@@ -700,7 +388,7 @@ Foam::word Foam::DPICloud<CloudType>::startCheckDue(const label nInjected)
         {
             ids[i++] = p.globalId();
         }
-        trace_->warnAbsent
+        models_->trace()->warnAbsent
         (
             ids, nextGlobalId_, this->db().time().timeName()
         );
@@ -712,10 +400,11 @@ Foam::word Foam::DPICloud<CloudType>::startCheckDue(const label nInjected)
 template<class CloudType>
 Foam::demObserver* Foam::DPICloud<CloudType>::stepObserver(const scalar t0)
 {
-    if (!observer_ && trace_.valid())
+    demTrace* trace = models_->trace();
+    if (!observer_ && trace)
     {
-        trace_->beginStep(t0, engine_->timeStep());
-        return trace_.get();
+        trace->beginStep(t0, engine().timeStep());
+        return trace;
     }
     return observer_;
 }
@@ -731,10 +420,12 @@ void Foam::DPICloud<CloudType>::subSteps
     List<scalarField>& scaOut
 )
 {
-    demState& rows = domain_->rows();
-    if (!coupling_->subStepForces())
+    demDomain& domain = models_->domain();
+    dpiFluidCoupling& coupling = models_->coupling();
+    demState& rows = domain.rows();
+    if (!coupling.subStepForces())
     {
-        engine_->evolve(rows, Dt, g, obs);
+        engine().evolve(rows, Dt, g, obs);
         return;
     }
 
@@ -742,14 +433,14 @@ void Foam::DPICloud<CloudType>::subSteps
     // every sub-step
     autoPtr<dpiSubStepForces> forces
     (
-        coupling_->newSubStepForces
+        coupling.newSubStepForces
         (
-            rows.owned(), domain_->vectorColumns(), domain_->scalarColumns(),
-            engine_->timeStep(), engine_->nSubSteps(Dt)
+            rows.owned(), domain.vectorColumns(), domain.scalarColumns(),
+            engine().timeStep(), engine().nSubSteps(Dt)
         )
     );
-    engine_->evolve(rows, Dt, g, obs, forces.get());
-    coupling_->subStepResults(forces(), vecOut, scaOut);
+    engine().evolve(rows, Dt, g, obs, forces.get());
+    coupling.subStepResults(forces(), vecOut, scaOut);
 }
 
 
@@ -760,7 +451,7 @@ void Foam::DPICloud<CloudType>::composeEscapes()
     labelList ids(n);
     scalarList d(n), rho(n);
     boolList carrier(n);
-    const demMaterials& mat = engine_->materials();
+    const demMaterials& mat = engine().materials();
     label i = 0;
     for (const parcelType& p : *this)
     {
@@ -789,66 +480,54 @@ void Foam::DPICloud<CloudType>::motion
 
     // The parcels as the mesh rows, in list order
     const label nInjected = inject(t1 - Dt, t1);
-    copyToState(nInjected == 0);
-    if (!domain_->ordersRows())
+    demEngine& engine = this->engine();
+    demDomain& domain = models_->domain();
+    dpiFluidCoupling& coupling = models_->coupling();
+    demState& state = rows_.state();
+    rows_.copy(*this, engine, domain, nInjected == 0);
+    if (!domain.ordersRows())
     {
-        orderParcels();
+        rows_.order(*this, engine);
     }
     const word checkWhen(startCheckDue(nInjected));
     demObserver* obs = stepObserver(t1 - Dt);
 
     // The run-time check (demEngine::checkStep) sees the whole fluid step
-    engine_->resetStepDiagnostics();
+    engine.resetStepDiagnostics();
 
     // The gas at the parcels: held forces, or the states the forces of
     // every sub-step start from
     List<vectorField> vecIn, vecOut, vecBack;
     List<scalarField> scaIn, scaOut, scaBack;
-    coupling_->startFluidStep(*this, state_, Dt, vecIn, scaIn);
+    coupling.startFluidStep(*this, state, Dt, vecIn, scaIn);
 
     // The rows to where the DEM runs, the start check there, the
     // sub-steps, the agglomerates labelled, every row back to its parcel
     scalar range = 0, margin = 0;
-    if (domain_->halo())
+    if (domain.halo())
     {
-        engine_->haloReach(state_, Dt, range, margin);
+        engine.haloReach(state, Dt, range, margin);
     }
-    domain_->begin(state_, vecIn, scaIn, rowKeys_, rowXi_, range, margin);
+    rows_.begin(domain, vecIn, scaIn, range, margin);
     if (checkWhen.size())
     {
-        engine_->checkStartState(domain_->rows(), checkWhen);
+        engine.checkStartState(domain.rows(), checkWhen);
     }
     subSteps(Dt, g, obs, vecOut, scaOut);
-    agglomerates_->update
+    models_->agglomerates().update
     (
-        domain_->rows(), engine_->materials(), domain_->agglomerateIds(),
-        domain_->halo()
+        domain.rows(), engine.materials(), domain.agglomerateIds(),
+        domain.halo()
     );
-    List<parcelType*> parcels(this->size());
-    {
-        label i = 0;
-        for (parcelType& p : *this)
-        {
-            parcels[i++] = &p;
-        }
-    }
-    domain_->end
-    (
-        state_,
-        [&parcels](const label i, demDomain::rowBack& row)
-        {
-            setParcel(*parcels[i], row);
-        },
-        vecOut, scaOut, vecBack, scaBack
-    );
-    coupling_->finishFluidStep(*this, vecBack, scaBack, Dt);
+    rows_.end(*this, domain, vecOut, scaOut, vecBack, scaBack);
+    coupling.finishFluidStep(*this, vecBack, scaBack, Dt);
 
-    agglomerates_->write(t1);
-    reports_->write
+    models_->agglomerates().write(t1);
+    models_->reports().write
     (
-        engine_(), *domain_, t1, returnReduce(this->size(), sumOp<label>())
+        engine, domain, t1, returnReduce(this->size(), sumOp<label>())
     );
-    engine_->checkStep(this->db().time().timeName());
+    engine.checkStep(this->db().time().timeName());
     composeEscapes();
 
     // Relocate every parcel to its DEM position: one tracking pass, which
@@ -864,7 +543,7 @@ void Foam::DPICloud<CloudType>::info()
 {
     CloudType::info();
 
-    const demMaterials& mat = engine_->materials();
+    const demMaterials& mat = engine().materials();
     forAll(mat.names(), typei)
     {
         if (!mat.isParticleType(typei))
@@ -875,7 +554,7 @@ void Foam::DPICloud<CloudType>::info()
             << " = " << nPrimaries(typei) << nl;
     }
 
-    const agglomerateTracker::statistics& ag = agglomerates_->stats();
+    const agglomerateTracker::statistics& ag = models_->agglomerates().stats();
     Info<< "    Agglomerates                    = " << ag.nAgglomerates
         << nl
         << "    API primaries: attached to carriers " << ag.attachedAPIPrimaries
