@@ -25,14 +25,16 @@ namespace rollingContactModels
 
 const Foam::wordList Foam::rollingContactModels::cdt::coeffKeys
 ({
-    "scaleTorqueWithN"
+    "scaleTorqueWithN",
+    "holdAtRest"
 });
 
 
 Foam::rollingContactModels::cdt::cdt(const dictionary& dict)
 :
     rollingContactModel(dict, typeName, coeffKeys),
-    scaleTorqueWithN_(coeffDict_.getOrDefault<bool>("scaleTorqueWithN", true))
+    scaleTorqueWithN_(coeffDict_.getOrDefault<bool>("scaleTorqueWithN", true)),
+    holdAtRest_(coeffDict_.getOrDefault<bool>("holdAtRest", false))
 {}
 
 
