@@ -18,6 +18,7 @@ Description
 
 #include <gtest/gtest.h>
 #include "demEngine.H"
+#include "guideParticles.H"
 #include "regionPacking.H"
 #include "IStringStream.H"
 #include "mathematicalConstants.H"
@@ -30,15 +31,9 @@ using namespace Foam;
 namespace
 {
 
-// Guide particles (theory 7.2), SI: carrier type 0, API type 1
-const scalar rCarrier = 35e-6;
-const scalar rApi = 2.5e-6;
-const scalar rho = 1520;
-
-scalar massOf(const scalar r)
-{
-    return rho*4.0/3.0*constant::mathematical::pi*pow3(r);
-}
+// Guide particles: carrier type 0, API type 1
+using namespace guideParticles;
+const auto massOf = guideParticles::mass;
 
 // The engine dictionary: API parcels of N, no cohesion, a floor z = 0 when
 // floor, the given coarse-graining entries

@@ -21,6 +21,7 @@ Description
 
 #include <gtest/gtest.h>
 #include "demEngine.H"
+#include "guideParticles.H"
 #include "vdwGuParcel.H"
 #include "IStringStream.H"
 #include "mathematicalConstants.H"
@@ -33,14 +34,7 @@ using namespace Foam;
 namespace
 {
 
-const scalar rApi = 2.5e-6;
-const scalar rCarrier = 35e-6;
-const scalar rho = 1520;
-
-scalar mass(const scalar r)
-{
-    return rho*4.0/3.0*constant::mathematical::pi*pow3(r);
-}
+using namespace guideParticles;
 
 dictionary toDict(const std::string& text)
 {

@@ -46,6 +46,7 @@ Description
 
 #include <gtest/gtest.h>
 #include "demEngine.H"
+#include "guideParticles.H"
 #include "IStringStream.H"
 #include "mathematicalConstants.H"
 #include "unitConversion.H"
@@ -57,9 +58,8 @@ using namespace Foam;
 namespace
 {
 
-const scalar rApi = 2.5e-6;
-const scalar rCarrier = 35e-6;
-const scalar rho = 1520;
+using namespace guideParticles;
+
 const scalar Y = 5e8;
 const scalar nu = 0.35;
 const scalar gMag = 9.81;
@@ -68,11 +68,6 @@ const scalar dt = 1e-8;
 // Types: 0 carrier, 1 api, 2 wall (the deck's order)
 const label carrier = 0;
 const label api = 1;
-
-scalar mass(const scalar r)
-{
-    return rho*4.0/3.0*constant::mathematical::pi*pow3(r);
-}
 
 // Hertz overlap of a contact of effective radius R loaded by F (equal
 // materials: Y* = Y/(2(1 - nu^2)))
