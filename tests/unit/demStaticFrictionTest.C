@@ -36,7 +36,8 @@ Description
     per step (mu_r k_n delta R* dt/I, about 50 rad/s under the guide's
     cohesion) dwarfs the motion it resists, and the API creeps, 2.3e-3 rad
     per ms on the turning carrier and 1.7e-7 m per ms on the carrier's
-    side. The scenes run cdt with holdAtRest (rolling/cdt), which leaves
+    side. The scenes run cdt as by default, holding at rest (rolling/cdt:
+    holdAtRest), which leaves
     a creep of G dt/I* under a rolling load G (2.5e-10 m per ms for the
     API's weight at the carrier's side). A scheme whose contact law sees
     velocities predicted to the step's end (Vyas et al.'s kind) held the
@@ -79,7 +80,8 @@ scalar hertzOverlap(const scalar F, const scalar R)
 
 const scalar Rstar = rCarrier*rApi/(rCarrier + rApi);
 
-// The guide's inhaler models; cdt holding at rest unless reference is set
+// The guide's inhaler models; cdt as by default (holding at rest), or with
+// the reference's torque
 dictionary engineDeck
 (
     const bool cohesion,
@@ -105,8 +107,7 @@ dictionary engineDeck
         << "normalModel hertzParcel;\n"
         << "tangentialModel historyParcel;\n"
         << "rollingModel " << rolling << ";\n"
-        << "cdtCoeffs { holdAtRest " << (reference ? "false" : "true")
-        << "; }\n";
+        << (reference ? "cdtCoeffs { holdAtRest false; }\n" : "");
     if (cohesion)
     {
         os  << "cohesionModel vdwGuParcel;\n"
@@ -274,7 +275,7 @@ TEST(demStaticFriction, apiOnCarrierSideHeldByCohesion)
 
     std::cout << "  API on a carrier's side: moved " << still
               << " m with cohesion, " << fell << " m without, " << crept
-              << " m with the reference cdt (no holdAtRest), in 1 ms"
+              << " m with the reference torque (holdAtRest false), in 1 ms"
               << std::endl;
 
     EXPECT_LT(still, 1e-9);

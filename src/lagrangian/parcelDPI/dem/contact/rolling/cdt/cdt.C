@@ -34,7 +34,7 @@ Foam::rollingContactModels::cdt::cdt(const dictionary& dict)
 :
     rollingContactModel(dict, typeName, coeffKeys),
     scaleTorqueWithN_(coeffDict_.getOrDefault<bool>("scaleTorqueWithN", true)),
-    holdAtRest_(coeffDict_.getOrDefault<bool>("holdAtRest", false))
+    holdAtRest_(coeffDict_.getOrDefault<bool>("holdAtRest", true))
 {}
 
 
