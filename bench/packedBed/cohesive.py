@@ -54,8 +54,7 @@ def main():
     carriers = cKDTree(x)
     api, owner = [], []
     for i, xc in enumerate(x):
-        for dp in powder.coat(rng, nPer):
-            p = xc + dp
+        for p in powder.coat(rng, nPer, xc, np.zeros((0, 3))):
             if np.any(p < ra) or np.any(p > box - ra):
                 continue
             near = carriers.query_ball_point(p, rc + ra)

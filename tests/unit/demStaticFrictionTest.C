@@ -38,7 +38,7 @@ Description
     per ms on the turning carrier and 1.7e-7 m per ms on the carrier's
     side. The scenes run cdt as by default, holding at rest (rolling/cdt:
     holdAtRest), which leaves
-    a creep of G dt/I* under a rolling load G (2.5e-10 m per ms for the
+    a creep of G dt/I* under a rolling load G (2.8e-10 m per ms for the
     API's weight at the carrier's side). A scheme whose contact law sees
     velocities predicted to the step's end (Vyas et al.'s kind) held the
     friction scenes alike and did worse with cdt: doc/theory.md 1.6.
@@ -254,7 +254,7 @@ TEST(demStaticFriction, apiOnCarrierBelowRollingAngleStays)
 // van der Waals force (A R*/(6 s0^2) ~ 1e-8 N, 1e4 times its weight) holds
 // it, through friction and the cdt torque. With holdAtRest the torque
 // that holds it against its weight's G = m g r leaves a creep of
-// G dt/I* = 0.24 nm per ms (I* ~ 0.4 m r^2): the bound is 1 nm. The
+// G dt/I* = 0.28 nm per ms (I* = 0.4 m* R*^2): the bound is 1 nm. The
 // reference cdt's creep is printed beside it.
 TEST(demStaticFriction, apiOnCarrierSideHeldByCohesion)
 {

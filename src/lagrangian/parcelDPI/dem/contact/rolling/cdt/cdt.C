@@ -34,7 +34,8 @@ Foam::rollingContactModels::cdt::cdt(const dictionary& dict)
 :
     rollingContactModel(dict, typeName, coeffKeys),
     scaleTorqueWithN_(coeffDict_.getOrDefault<bool>("scaleTorqueWithN", true)),
-    holdAtRest_(coeffDict_.getOrDefault<bool>("holdAtRest", true))
+    holdAtRest_(coeffDict_.getOrDefault<bool>("holdAtRest", true)),
+    invDt_(1/dict.get<scalar>("timeStep"))
 {}
 
 
