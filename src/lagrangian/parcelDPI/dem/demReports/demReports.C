@@ -19,6 +19,7 @@ Foam::demReports::demReports
     const word& startTime
 )
 :
+    engine_(engine),
     diagFile_(nullptr),
     perfFile_(nullptr),
     statsFile_(nullptr),
@@ -63,13 +64,12 @@ Foam::demReports::demReports
 
 void Foam::demReports::write
 (
-    const demEngine& engine,
     const demDomain& domain,
     const scalar t,
     const label nParcels
 )
 {
-    const demDiagnostics& d = engine.diagnostics();
+    const demDiagnostics& d = engine_.diagnostics();
 
     const scalar ke = returnReduce(d.kineticEnergy, sumOp<scalar>());
     const scalar re = returnReduce(d.rotationalEnergy, sumOp<scalar>());
@@ -87,15 +87,16 @@ void Foam::demReports::write
     if (perfFile_.valid())
     {
         perfFile_()
-            << t << ' ' << engine.nSteps()
-            << ' ' << engine.timePair() << ' ' << engine.timeWall()
-            << ' ' << engine.timeNeighbour() << ' ' << engine.timeIntegrate()
-            << ' ' << engine.timeHalo() << ' ' << engine.timeExternal()
-            << ' ' << engine.neighbours().nBuilds()
-            << ' ' << engine.nNearBuilds() << endl;
+            << t << ' ' << engine_.nSteps()
+            << ' ' << engine_.timePair() << ' ' << engine_.timeWall()
+            << ' ' << engine_.timeNeighbour()
+            << ' ' << engine_.timeIntegrate()
+            << ' ' << engine_.timeHalo() << ' ' << engine_.timeExternal()
+            << ' ' << engine_.neighbours().nBuilds()
+            << ' ' << engine_.nNearBuilds() << endl;
     }
 
-    if (const contactStatistics* stats = engine.contactStats())
+    if (const contactStatistics* stats = engine_.contactStats())
     {
         // collective: every processor's counts go to the master
         stats->write(t, statsFile_.valid() ? statsFile_() : Snull);
@@ -103,7 +104,7 @@ void Foam::demReports::write
 
     balance_.sample(t, domain.nOwned(), domain.nRows(), d.nPairContacts);
 
-    Info<< "    DEM: " << engine.nSteps() << " sub-steps so far"
+    Info<< "    DEM: " << engine_.nSteps() << " sub-steps so far"
         << ", contacts (pair, wall) = (" << nPair << ", " << nWall << ")"
         << ", max overlap/R* = " << maxOverlap
         << ", kinetic energy = " << ke << ", rotational = " << re << nl;

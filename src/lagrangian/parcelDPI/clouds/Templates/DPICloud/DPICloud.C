@@ -525,7 +525,7 @@ void Foam::DPICloud<CloudType>::motion
     models_->agglomerates().write(t1);
     models_->reports().write
     (
-        engine, domain, t1, returnReduce(this->size(), sumOp<label>())
+        domain, t1, returnReduce(this->size(), sumOp<label>())
     );
     engine.checkStep(this->db().time().timeName());
     composeEscapes();
