@@ -310,7 +310,7 @@ def writeDpi(case, x, v, L, args):
     with open(os.path.join(case, "constant/g"), "w") as f:
         f.write(header("uniformDimensionedVectorField", "g"))
         f.write("dimensions      [0 1 -2 0 0 0 0];\n"
-                "value           (0 0 %g);\n" % -GRAVITY)
+                "value           (%.12g %.12g %.12g);\n" % tuple(args.g))
 
     # Plain lists for the particleList injector (read as a lagrangian
     # field is; one dictionary per particle would dominate the set-up time
@@ -361,8 +361,7 @@ dem
 
     walls
     {
-        box { type patch; patches (walls); material wallMaterial; }
-    }
+%(walls)s    }
 
     // Verlet skin: the default (smallest diameter), stated for the peers
     neighbourSearch { skin %(skin)g; order %(sweep)s; }
@@ -384,7 +383,26 @@ injectors
 """ % dict(preamble=dpiCloudPreamble(DENSITY), rho=DENSITY, dt=dt, d=DIAMETER, E=YOUNG, nu=POISSON,
            e=RESTITUTION, mu=FRICTION, skin=args.skin,
            vmax=args.max_impact_velocity, idOrder=args.dpi_order,
-           sweep=args.dpi_sweep))
+           sweep=args.dpi_sweep, walls=dpiWalls(L, args.walls)))
+
+
+def dpiWalls(L, kind):
+    """The dpiFoam walls of the box: the mesh patch `walls` (mesh, the
+    default) or six plane walls on its faces (planes)."""
+    if kind != "planes":
+        return ("        box { type patch; patches (walls); "
+                "material wallMaterial; }\n")
+    walls = ""
+    for k, (a, e) in enumerate(zip("xyz", boxOf(L))):
+        for side, pos, sign in (("lo", 0.0, 1), ("hi", e, -1)):
+            p = [0.0, 0.0, 0.0]
+            p[k] = pos
+            nrm = [0, 0, 0]
+            nrm[k] = sign
+            walls += ("        %s%s { type plane; point (%.12g %.12g %.12g); "
+                      "normal (%d %d %d); material wallMaterial; }\n"
+                      % (a, side, p[0], p[1], p[2], nrm[0], nrm[1], nrm[2]))
+    return walls
 
 
 def writeLiggghtsData(path, x, v, L, title):
@@ -404,14 +422,43 @@ def writeLiggghtsData(path, x, v, L, title):
             f.write("%d %.10e %.10e %.10e 0 0 0\n" % (i + 1, u[0], u[1], u[2]))
 
 
-def liggghtsWalls(L):
-    """Six primitive plane walls (type 2) on the faces of the box."""
+def liggghtsWalls(L, kind="planes"):
+    """Six primitive plane walls (type 2) on the faces of the box, or
+    (mesh) the box as a triangle mesh, box.stl (writeBoxStl)."""
+    if kind == "mesh":
+        return ("fix box all mesh/surface file box.stl type 2\n"
+                "fix wbox all wall/gran model hertz tangential history "
+                "mesh n_meshes 1 meshes box\n")
     walls = ""
     for a, name, e in zip("xyz", ("xplane", "yplane", "zplane"), boxOf(L)):
         for side, pos in (("lo", 0.0), ("hi", e)):
             walls += ("fix w%s%s all wall/gran model hertz tangential history"
                       " primitive type 2 %s %.12g\n" % (a, side, name, pos))
     return walls
+
+
+def writeBoxStl(path, L):
+    """The box [0, Lx] x [0, Ly] x [0, Lz] as an ASCII STL: two triangles
+    a face, normals outwards."""
+    b = boxOf(L)
+    c = [(i*b[0], j*b[1], k*b[2]) for k in (0, 1) for j in (0, 1)
+         for i in (0, 1)]
+    # faces as corner indices (i + 2 j + 4 k), counter-clockwise seen
+    # from outside
+    quads = ((0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3),
+             (0, 4, 6, 2), (1, 3, 7, 5))
+    with open(path, "w") as f:
+        f.write("solid box\n")
+        for q in quads:
+            for t in ((q[0], q[1], q[2]), (q[0], q[2], q[3])):
+                p = [np.array(c[i]) for i in t]
+                nrm = np.cross(p[1] - p[0], p[2] - p[0])
+                nrm /= np.linalg.norm(nrm)
+                f.write("facet normal %g %g %g\nouter loop\n" % tuple(nrm))
+                for v in p:
+                    f.write("vertex %.12g %.12g %.12g\n" % tuple(v))
+                f.write("endloop\nendfacet\n")
+        f.write("endsolid box\n")
 
 
 def liggghtsMaterial(E, nu, e, mu):
@@ -438,12 +485,14 @@ def writeLiggghts(case, x, v, L, args):
         contactsThermo = " c_cnsum"
     writeLiggghtsData(os.path.join(case, "data.settling"), x, v, L,
                       "settlingCarriers: %d carriers, %s" % (n, args.source))
+    if args.walls == "mesh":
+        writeBoxStl(os.path.join(case, "box.stl"), L)
 
     with open(os.path.join(case, "in.settling"), "w") as f:
         f.write(liggghtsSetup(
             "settlingCarriers in stock LIGGGHTS (bench/common/settlingScene.py)",
             "data.settling", args.skin, YOUNG, RESTITUTION, FRICTION, args.dt,
-            GRAVITY, L))
+            args.g, L, args.walls or "planes"))
         f.write("""%(contacts)sthermo_style    custom step atoms ke c_rke%(contactsThermo)s
 thermo          %(every)d
 thermo_modify   lost ignore norm no
@@ -455,11 +504,12 @@ run             ${nsteps}
            contactsThermo=contactsThermo))
 
 
-def liggghtsSetup(title, data, skin, E, e, mu, dt, g, L):
+def liggghtsSetup(title, data, skin, E, e, mu, dt, g, L, walls="planes"):
     """The start of a LIGGGHTS input: the carriers of the data file (type
     1, walls type 2, one material of Young's modulus E, restitution e,
     friction mu), hertz/history, six plane walls of the box L, gravity g
-    [m/s2] along -z, nve/sphere, neighbour skin, time step dt, and the
+    [m/s2] along -z (or a vector), nve/sphere, neighbour skin, time step
+    dt, and the
     compute rke (rotational energy); thermo and run are the caller's."""
     return """# %(title)s
 atom_style      granular
@@ -481,14 +531,22 @@ pair_coeff      * *
 
 timestep        %(dt)g
 
-fix             grav all gravity %(g)g vector 0.0 0.0 -1.0
+fix             grav all gravity %(g)s
 %(walls)s
 fix             integr all nve/sphere
 
 compute         rke all erotate/sphere
 """ % dict(title=title, data=data, skin=skin,
-           material=liggghtsMaterial(E, POISSON, e, mu), dt=dt, g=g,
-           walls=liggghtsWalls(L))
+           material=liggghtsMaterial(E, POISSON, e, mu), dt=dt,
+           g=liggghtsGravity(g), walls=liggghtsWalls(L, walls))
+
+
+def liggghtsGravity(g):
+    """fix gravity's arguments for g [m/s2] along -z, or a vector g."""
+    g = np.broadcast_to(np.asarray(g, float), (3,)) if np.ndim(g) \
+        else np.array([0.0, 0.0, -float(g)])
+    mag = float(np.linalg.norm(g))
+    return "%.12g vector %.12g %.12g %.12g" % ((mag,) + tuple(g/mag))
 
 
 def tsujiAlpha(e):
@@ -545,7 +603,7 @@ def writeOpenfoam(case, x, v, L, args):
     with open(os.path.join(case, "constant/g"), "w") as f:
         f.write(header("uniformDimensionedVectorField", "g"))
         f.write("dimensions      [0 1 -2 0 0 0 0];\n"
-                "value           (0 0 %g);\n" % -GRAVITY)
+                "value           (%.12g %.12g %.12g);\n" % tuple(args.g))
     with open(os.path.join(case, "constant/transportProperties"), "w") as f:
         f.write(header("dictionary", "transportProperties"))
         f.write("rhoInf 1.2;\ntransportModel Newtonian;\nnu 1.5e-05;\n")
@@ -695,6 +753,10 @@ def main():
                     help="Verlet skin [m] (dpiFoam, LIGGGHTS)")
     ap.add_argument("--max-impact-velocity", type=float,
                     help="dpiFoam timeStepCheck [m/s] (default from --vrms)")
+    ap.add_argument("--walls", choices=("planes", "mesh"),
+                    help="the box's walls: six planes, or a mesh (dpiFoam "
+                    "the mesh patch, LIGGGHTS an STL); default dpiFoam's "
+                    "mesh patch and LIGGGHTS' planes")
     ap.add_argument("--contacts", action="store_true",
                     help="liggghts: pair contacts in the thermo output")
     args = ap.parse_args()
@@ -711,8 +773,9 @@ def main():
                  % (args.steps, args.steps//args.fluid_every,
                     args.fluid_every))
 
+    args.g = (0.0, 0.0, -GRAVITY)
     if args.positions:
-        x, v, L = loadPositions(args.positions, args.n)
+        x, v, L, args.g = loadPositions(args.positions, args.n)
         args.source = "from %s" % os.path.basename(args.positions)
         print("settlingScene: %d particles from %s, box %s mm"
               % (len(x), args.positions,
@@ -743,8 +806,9 @@ def write(kind, case, x, v, L, args):
 
 
 def loadPositions(path, n=None):
-    """x, v (zero if not stored) and box of an NPZ of particles; n, when
-    given, must match (or 1: the first particle only, an 'empty' case)."""
+    """x, v (zero if not stored), box and gravity g [m/s2] (-z if not
+    stored) of an NPZ of particles; n, when given, must match (or 1: the
+    first particle only, an 'empty' case)."""
     data = np.load(path)
     x = np.array(data["x"], float)
     v = np.array(data["v"], float) if "v" in data else np.zeros_like(x)
@@ -753,7 +817,9 @@ def loadPositions(path, n=None):
             sys.exit("settlingScene: --n %d but %s has %d particles"
                      % (n, path, len(x)))
         x, v = x[:1], v[:1]
-    return x, v, np.array(data["box"], float)
+    g = np.array(data["g"], float) if "g" in data \
+        else np.array([0.0, 0.0, -GRAVITY])
+    return x, v, np.array(data["box"], float), g
 
 
 if __name__ == "__main__":

@@ -4,7 +4,10 @@
 Usage: analyse.py --csv results.csv --png throughput.png --md results.md \\
            cases/N2000 cases/N10000 ... [cases/cohesive-N2000]
 
-One row per bed size N and process count np (code "bed"), per code the
+One row per bed, bed size N and process count np (code "bed": the still
+bed with dpiFoam's mesh patch and LIGGGHTS' planes; "<bed>-<walls>": a bed
+of moving.py, or the still one, with walls as planes or as a mesh in both
+codes), per code the
 best of the repeated runs (highest loop rate); the cohesive variant's rows
 have code "cohesive" (dpiFoam only). Columns:
 
@@ -44,6 +47,7 @@ have code "cohesive" (dpiFoam only). Columns:
                 before that line: dpi_setup_s - the empty case's (a
                 difference of two step times, good to about a second at
                 50,000 on a loaded machine)
+  dpi_near_builds   dpiFoam's near-list builds (its first process)
   *_runs        every run's rate
   load_before   1-min load average before the best dpiFoam run
   parcels, api_attached, api_detached   cohesive rows: DEM parcels, API
@@ -80,7 +84,7 @@ COLUMNS = [
     "of_empty_anon_MB", "dpi_anon_kB_per_particle",
     "lig_anon_kB_per_particle", "of_anon_kB_per_particle", "dpi_setup_s",
     "dpi_inject_s", "parcels", "api_attached", "api_detached",
-    "dpi_runs", "lig_runs", "of_runs", "load_before",
+    "dpi_runs", "lig_runs", "of_runs", "load_before", "dpi_near_builds",
 ]
 NAN = float("nan")
 
@@ -114,7 +118,15 @@ def dpiRun(d):
                 injectTime=log["injectTime"],
                 zFirst=2*dg["first"]["nPair"]/n, zEnd=2*dg["nPair"]/n,
                 KE=dg["KE"], tm=benchLogs.gnuTimes(d),
+                nearBuilds=nearBuilds(text),
                 api=[int(x) for x in api[-1]] if api else [NAN, NAN])
+
+
+def nearBuilds(text):
+    """Near-list builds of a dpiFoam log (summed over the processes'
+    performance lines of the last report: the first process's)."""
+    m = re.findall(r"(\d+) near builds", text)
+    return int(m[-1]) if m else NAN
 
 
 def ligRun(d, setup):
@@ -164,16 +176,32 @@ def best(runs):
     return max(runs, key=lambda r: r["rate"]) if runs else None
 
 
+def kindOf(base):
+    """The code of a case directory's rows and its bed's NPZ: "bed" and
+    bed-N<n>.npz for cases/N<n> (the still bed, default walls);
+    "<bed>-<walls>" and <bed>-N<n>.npz (or bed-N<n>.npz for the still one)
+    for cases/<bed>-N<n>-<walls>; "cohesive" for cases/cohesive-N<n>."""
+    name = os.path.basename(base.rstrip("/"))
+    top = os.path.dirname(base.rstrip("/"))
+    m = re.match(r"^N(\d+)$", name)
+    if m:
+        return "bed", os.path.join(top, "bed-N%s.npz" % m.group(1))
+    m = re.match(r"^(\w+)-N(\d+)-(\w+)$", name)
+    if m:
+        bed = "bed" if m.group(1) == "still" else m.group(1)
+        return (m.group(1) + "-" + m.group(3),
+                os.path.join(top, "%s-N%s.npz" % (bed, m.group(2))))
+    return "cohesive", ""
+
+
 def rows(base):
     out = []
-    cohesive = os.path.basename(base.rstrip("/")).startswith("cohesive")
+    code, bedFile = kindOf(base)
+    cohesive = code == "cohesive"
     nps = sorted({int(m.group(1)) for p in glob.glob(os.path.join(base, "*-np*-r*"))
                   for m in [re.search(r"-np(\d+)-r", p)] if m})
     zStart = NAN
-    bedN = re.search(r"N(\d+)$", base.rstrip("/"))
-    bedFile = os.path.join(os.path.dirname(base.rstrip("/")),
-                           "bed-N%s.npz" % bedN.group(1)) if bedN else ""
-    if os.path.isfile(bedFile) and not cohesive:
+    if os.path.isfile(bedFile):
         zStart = json.loads(str(np.load(bedFile)["stats"]))["z_geometric"]
     for np_ in nps:
         runs = {}
@@ -188,7 +216,7 @@ def rows(base):
             os.path.join(base, "openfoam-np%d-r*" % np_)))]
         b = {k: best(v) for k, v in runs.items()}
         anyRun = next(r for r in b.values() if r)
-        r = {"code": "cohesive" if cohesive else "bed", "N": anyRun["n"],
+        r = {"code": code, "N": anyRun["n"],
              "np": np_, "z_start": zStart,
              "steps": b["dpi"]["steps"] if b["dpi"] else "",
              "of_steps": b["of"]["steps"] - 1 if b["of"] else ""}
@@ -215,6 +243,7 @@ def rows(base):
         d = b["dpi"]
         if d:
             r.update(dpi_engine_psps=d["engine"], dpi_pair_share=d["pairShare"],
+                     dpi_near_builds=d["nearBuilds"],
                      dpi_z_first=d["zFirst"], dpi_z_end=d["zEnd"],
                      dpi_setup_s=d["setup"], parcels=d["n"],
                      load_before=benchLogs.machineLoad(d["case"]))
@@ -335,6 +364,28 @@ def markdown(table, md):
                                 for k in ("dpi", "lig", "of"))
                         + (g(f(r, "dpi_setup_s"), "%.2f"),
                            g(f(r, "dpi_inject_s"), "%.2f"))))
+        moving = [r for r in table if r["code"] not in ("bed", "cohesive")]
+        if moving:
+            fh.write("\nBeds in motion (moving.py) and walls as planes or a "
+                     "mesh in both codes:\n\n"
+                     "| bed | walls | carriers | np | dpiFoam | LIGGGHTS | "
+                     "dpiFoam/LIGGGHTS | contacts/particle at the start "
+                     "(geometric) -> dpiFoam's end | KE at the end dpiFoam / "
+                     "LIGGGHTS [J] | dpiFoam pair share | near builds |\n"
+                     "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n")
+            for r in moving:
+                bed, walls = r["code"].split("-")
+                fh.write("| %s | %s | %s | %s | %s | %s | **%s** | %s -> %s "
+                         "| %s / %s | %s | %s |\n"
+                         % (bed, walls, r["N"], r["np"],
+                            g(f(r, "dpi_psps"), "%.3g"),
+                            g(f(r, "lig_psps"), "%.3g"),
+                            g(f(r, "ratio_lig"), "%.2f"),
+                            g(f(r, "z_start"), "%.2f"),
+                            g(f(r, "dpi_z_end"), "%.2f"),
+                            g(f(r, "dpi_KE"), "%.3g"), g(f(r, "lig_KE"), "%.3g"),
+                            g(100*f(r, "dpi_pair_share"), "%.0f %%"),
+                            r.get("dpi_near_builds", "-")))
         if coh:
             fh.write("\nCohesive variant (dpiFoam only):\n\n"
                      "| parcels | np | parcel-steps/s | 2-process speed-up | "

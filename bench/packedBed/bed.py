@@ -112,9 +112,10 @@ def thermo(log):
 
 
 def stage(work, k, name, x, box, E, e, mu, dt, gfac, steps, tau, quench,
-          np_):
-    """One LIGGGHTS run from positions x at rest; returns the positions,
-    velocities at the end and the thermo rows."""
+          np_, g=None):
+    """One LIGGGHTS run from positions x at rest (gravity gfac g along -z,
+    or the vector g); returns the positions, velocities at the end and the
+    thermo rows."""
     d = os.path.join(work, "%d-%s" % (k, name))
     os.makedirs(d, exist_ok=True)
     for old in glob.glob(os.path.join(d, "dump.*")):
@@ -135,7 +136,8 @@ def stage(work, k, name, x, box, E, e, mu, dt, gfac, steps, tau, quench,
     with open(os.path.join(d, "in.bed"), "w") as f:
         f.write(ss.liggghtsSetup(
             "packedBed generation, stage %s (bench/packedBed/bed.py)" % name,
-            "data.bed", 0.25*ss.DIAMETER, E, e, mu, dt, gfac*ss.GRAVITY, box))
+            "data.bed", 0.25*ss.DIAMETER, E, e, mu, dt,
+            gfac*ss.GRAVITY if g is None else g, box))
         f.write("""compute         cn all contact/atom
 compute         cnsum all reduce sum c_cn
 thermo_style    custom step atoms ke c_rke c_cnsum

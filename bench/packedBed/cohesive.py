@@ -46,7 +46,7 @@ def main():
         sys.exit("cohesive.py: --steps must be a multiple of --fluid-every")
 
     from scipy.spatial import cKDTree
-    x, _, box = ss.loadPositions(a.bed)
+    x, _, box, _ = ss.loadPositions(a.bed)
     box = np.array(ss.boxOf(box))
     nPer = max(1, int(round(a.primaries/a.N)))
     rng = np.random.default_rng(a.seed)
