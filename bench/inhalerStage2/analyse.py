@@ -33,7 +33,8 @@ def run(d):
     m = re.findall(r"API primaries: attached to carriers (\d+), detached (\d+)"
                    r" \(singlets (\d+)\)", log)
     a, det, sing = (int(x) for x in m[-1])
-    out["apiAttachedEnd"] = a/(a + det)
+    # (none left in the system: every primary out of the outlet)
+    out["apiAttachedEnd"] = a/(a + det) if a + det else float("nan")
     # the open patches' counters (the exit region's two, or an outlet) at
     # the last step that reports them
     esc = {}
