@@ -298,6 +298,11 @@ def g(v, form):
     return "-" if v != v else form % v
 
 
+def cells(r, spec):
+    """Row r's columns formatted, spec a list of (column, format)."""
+    return tuple(g(f(r, k), form) for k, form in spec)
+
+
 def markdown(table, md):
     bed = [r for r in table if r["code"] == "bed"]
     coh = [r for r in table if r["code"] == "cohesive"]
@@ -336,14 +341,12 @@ def markdown(table, md):
         for r in bed:
             fh.write("| %s | %s | %s | %s -> %s | %s -> %s | %s | %s / %s / "
                      "%s |\n"
-                     % (r["N"], r["np"], g(f(r, "z_start"), "%.2f"),
-                        g(f(r, "dpi_z_first"), "%.2f"),
-                        g(f(r, "dpi_z_end"), "%.2f"),
-                        g(f(r, "lig_z_start"), "%.2f"),
-                        g(f(r, "lig_z_end"), "%.2f"),
-                        g(f(r, "of_z_end"), "%.2f"),
-                        g(f(r, "dpi_KE"), "%.4g"), g(f(r, "lig_KE"), "%.4g"),
-                        g(f(r, "of_KE"), "%.4g")))
+                     % ((r["N"], r["np"])
+                        + cells(r, [(k, "%.2f") for k in (
+                            "z_start", "dpi_z_first", "dpi_z_end",
+                            "lig_z_start", "lig_z_end", "of_z_end")])
+                        + cells(r, [(k + "_KE", "%.4g")
+                                    for k in ("dpi", "lig", "of")])))
         fh.write("\n| carriers | np | peak RSS dpiFoam / LIGGGHTS / OpenFOAM "
                  "[MB] | empty case [MB] | kB per particle above the empty "
                  "case | anonymous pages only: kB per particle above the "
@@ -377,15 +380,15 @@ def markdown(table, md):
                 bed, walls = r["code"].split("-")
                 fh.write("| %s | %s | %s | %s | %s | %s | **%s** | %s -> %s "
                          "| %s / %s | %s | %s |\n"
-                         % (bed, walls, r["N"], r["np"],
-                            g(f(r, "dpi_psps"), "%.3g"),
-                            g(f(r, "lig_psps"), "%.3g"),
-                            g(f(r, "ratio_lig"), "%.2f"),
-                            g(f(r, "z_start"), "%.2f"),
-                            g(f(r, "dpi_z_end"), "%.2f"),
-                            g(f(r, "dpi_KE"), "%.3g"), g(f(r, "lig_KE"), "%.3g"),
-                            g(100*f(r, "dpi_pair_share"), "%.0f %%"),
-                            r.get("dpi_near_builds", "-")))
+                         % ((bed, walls, r["N"], r["np"])
+                            + cells(r, [("dpi_psps", "%.3g"),
+                                        ("lig_psps", "%.3g"),
+                                        ("ratio_lig", "%.2f"),
+                                        ("z_start", "%.2f"),
+                                        ("dpi_z_end", "%.2f"),
+                                        ("dpi_KE", "%.3g"), ("lig_KE", "%.3g")])
+                            + (g(100*f(r, "dpi_pair_share"), "%.0f %%"),
+                               r.get("dpi_near_builds", "-"))))
         if coh:
             fh.write("\nCohesive variant (dpiFoam only):\n\n"
                      "| parcels | np | parcel-steps/s | 2-process speed-up | "
