@@ -386,6 +386,15 @@ injectors
            sweep=args.dpi_sweep, walls=dpiWalls(L, args.walls)))
 
 
+def boxFaces(L):
+    """The six faces of the box [0, Lx] x [0, Ly] x [0, Lz]: (axis index,
+    axis name, side lo|hi, the face's coordinate, the inward normal's
+    sign)."""
+    for k, (a, e) in enumerate(zip("xyz", boxOf(L))):
+        yield k, a, "lo", 0.0, 1
+        yield k, a, "hi", e, -1
+
+
 def dpiWalls(L, kind):
     """The dpiFoam walls of the box: the mesh patch `walls` (mesh, the
     default) or six plane walls on its faces (planes)."""
@@ -393,15 +402,14 @@ def dpiWalls(L, kind):
         return ("        box { type patch; patches (walls); "
                 "material wallMaterial; }\n")
     walls = ""
-    for k, (a, e) in enumerate(zip("xyz", boxOf(L))):
-        for side, pos, sign in (("lo", 0.0, 1), ("hi", e, -1)):
-            p = [0.0, 0.0, 0.0]
-            p[k] = pos
-            nrm = [0, 0, 0]
-            nrm[k] = sign
-            walls += ("        %s%s { type plane; point (%.12g %.12g %.12g); "
-                      "normal (%d %d %d); material wallMaterial; }\n"
-                      % (a, side, p[0], p[1], p[2], nrm[0], nrm[1], nrm[2]))
+    for k, a, side, pos, sign in boxFaces(L):
+        p = [0.0, 0.0, 0.0]
+        p[k] = pos
+        nrm = [0, 0, 0]
+        nrm[k] = sign
+        walls += ("        %s%s { type plane; point (%.12g %.12g %.12g); "
+                  "normal (%d %d %d); material wallMaterial; }\n"
+                  % (a, side, p[0], p[1], p[2], nrm[0], nrm[1], nrm[2]))
     return walls
 
 
@@ -430,10 +438,9 @@ def liggghtsWalls(L, kind="planes"):
                 "fix wbox all wall/gran model hertz tangential history "
                 "mesh n_meshes 1 meshes box\n")
     walls = ""
-    for a, name, e in zip("xyz", ("xplane", "yplane", "zplane"), boxOf(L)):
-        for side, pos in (("lo", 0.0), ("hi", e)):
-            walls += ("fix w%s%s all wall/gran model hertz tangential history"
-                      " primitive type 2 %s %.12g\n" % (a, side, name, pos))
+    for _, a, side, pos, _ in boxFaces(L):
+        walls += ("fix w%s%s all wall/gran model hertz tangential history"
+                  " primitive type 2 %splane %.12g\n" % (a, side, a, pos))
     return walls
 
 

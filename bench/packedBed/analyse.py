@@ -123,8 +123,8 @@ def dpiRun(d):
 
 
 def nearBuilds(text):
-    """Near-list builds of a dpiFoam log (summed over the processes'
-    performance lines of the last report: the first process's)."""
+    """Near-list builds of a dpiFoam log: its last performance line (the
+    master process's own on more than one)."""
     m = re.findall(r"(\d+) near builds", text)
     return int(m[-1]) if m else NAN
 
@@ -357,16 +357,13 @@ def markdown(table, md):
             fh.write("| %s | %s | %s / %s / %s | %s / %s / %s | "
                      "%s / %s / %s | %s / %s / %s | %s | %s |\n"
                      % ((r["N"], r["np"])
-                        + tuple(g(f(r, k + "_rss_MB"), "%.0f")
-                                for k in ("dpi", "lig", "of"))
-                        + tuple(g(f(r, k + "_empty_rss_MB"), "%.0f")
-                                for k in ("dpi", "lig", "of"))
-                        + tuple(g(f(r, k + "_kB_per_particle"), "%.2f")
-                                for k in ("dpi", "lig", "of"))
-                        + tuple(g(f(r, k + "_anon_kB_per_particle"), "%.2f")
-                                for k in ("dpi", "lig", "of"))
-                        + (g(f(r, "dpi_setup_s"), "%.2f"),
-                           g(f(r, "dpi_inject_s"), "%.2f"))))
+                        + cells(r, [(k + col, form) for col, form in (
+                            ("_rss_MB", "%.0f"), ("_empty_rss_MB", "%.0f"),
+                            ("_kB_per_particle", "%.2f"),
+                            ("_anon_kB_per_particle", "%.2f"))
+                            for k in ("dpi", "lig", "of")])
+                        + cells(r, [("dpi_setup_s", "%.2f"),
+                                    ("dpi_inject_s", "%.2f")])))
         moving = [r for r in table if r["code"] not in ("bed", "cohesive")]
         if moving:
             fh.write("\nBeds in motion (moving.py) and walls as planes or a "
