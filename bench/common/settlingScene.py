@@ -216,6 +216,14 @@ def writeDecomposeParDict(case):
                 "coeffs { n (2 1 1); }\n")
 
 
+def writeGravity(case, g):
+    """constant/g: the gravity vector g (3 numbers) [m/s2]."""
+    with open(os.path.join(case, "constant/g"), "w") as f:
+        f.write(header("uniformDimensionedVectorField", "g"))
+        f.write("dimensions      [0 1 -2 0 0 0 0];\n"
+                "value           (%.12g %.12g %.12g);\n" % tuple(g))
+
+
 def header(cls, obj):
     return ("FoamFile\n{\n    version     2.0;\n    format      ascii;\n"
             "    class       %s;\n    object      %s;\n}\n" % (cls, obj))
@@ -307,10 +315,7 @@ def writeDpi(case, x, v, L, args):
     with open(os.path.join(case, "constant/couplingProperties"), "w") as f:
         f.write(header("dictionary", "couplingProperties"))
         f.write("fluid       none;\ncloudName   dpiCloud;\n")
-    with open(os.path.join(case, "constant/g"), "w") as f:
-        f.write(header("uniformDimensionedVectorField", "g"))
-        f.write("dimensions      [0 1 -2 0 0 0 0];\n"
-                "value           (%.12g %.12g %.12g);\n" % tuple(args.g))
+    writeGravity(case, args.g)
 
     # Plain lists for the particleList injector (read as a lagrangian
     # field is; one dictionary per particle would dominate the set-up time
@@ -607,10 +612,7 @@ def writeOpenfoam(case, x, v, L, args):
         f.write(header("dictionary", "fvSolution"))
         f.write("solvers {}\n")
     writeDecomposeParDict(case)
-    with open(os.path.join(case, "constant/g"), "w") as f:
-        f.write(header("uniformDimensionedVectorField", "g"))
-        f.write("dimensions      [0 1 -2 0 0 0 0];\n"
-                "value           (%.12g %.12g %.12g);\n" % tuple(args.g))
+    writeGravity(case, args.g)
     with open(os.path.join(case, "constant/transportProperties"), "w") as f:
         f.write(header("dictionary", "transportProperties"))
         f.write("rhoInf 1.2;\ntransportModel Newtonian;\nnu 1.5e-05;\n")

@@ -154,9 +154,7 @@ def writeCase(case, parts, L, steps, every, dt, note, title, N,
     with open(os.path.join(case, "constant/couplingProperties"), "w") as f:
         f.write(ss.header("dictionary", "couplingProperties"))
         f.write("fluid none;\ncloudName dpiCloud;\n")
-    with open(os.path.join(case, "constant/g"), "w") as f:
-        f.write(ss.header("uniformDimensionedVectorField", "g"))
-        f.write("dimensions [0 1 -2 0 0 0 0];\nvalue (0 0 -9.81);\n")
+    ss.writeGravity(case, (0, 0, -9.81))
     with open(os.path.join(case, "constant/powderParticles"), "w") as f:
         f.write("// %s\n" % note)
         f.write("particles\n(\n")

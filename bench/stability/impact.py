@@ -188,9 +188,7 @@ def write(a):
     with open(os.path.join(case, "constant/couplingProperties"), "w") as f:
         f.write(ss.header("dictionary", "couplingProperties"))
         f.write("fluid none;\ncloudName dpiCloud;\n")
-    with open(os.path.join(case, "constant/g"), "w") as f:
-        f.write(ss.header("uniformDimensionedVectorField", "g"))
-        f.write("dimensions [0 1 -2 0 0 0 0];\nvalue (0 0 0);\n")
+    ss.writeGravity(case, (0, 0, 0))
     with open(os.path.join(case, "constant/dpiCloudProperties"), "w") as f:
         f.write(ss.header("dictionary", "dpiCloudProperties"))
         f.write("""// bench/stability: %(kind)s, N %(N)d, Y %(Y)g Pa, v %(v)g m/s,
