@@ -216,6 +216,20 @@ def writeDecomposeParDict(case):
                 "coeffs { n (2 1 1); }\n")
 
 
+def writeNoSolvers(case):
+    """system/fvSolution with no solvers: the case has no gas to solve."""
+    with open(os.path.join(case, "system/fvSolution"), "w") as f:
+        f.write(header("dictionary", "fvSolution"))
+        f.write("solvers {}\n")
+
+
+def writeNoFluid(case):
+    """constant/couplingProperties of a DEM-only dpiFoam case."""
+    with open(os.path.join(case, "constant/couplingProperties"), "w") as f:
+        f.write(header("dictionary", "couplingProperties"))
+        f.write("fluid       none;\ncloudName   dpiCloud;\n")
+
+
 def writeGravity(case, g):
     """constant/g: the gravity vector g (3 numbers) [m/s2]."""
     with open(os.path.join(case, "constant/g"), "w") as f:
@@ -307,14 +321,10 @@ def writeDpi(case, x, v, L, args):
                 "laplacianSchemes { default Gauss linear corrected; }\n"
                 "interpolationSchemes { default linear; }\n"
                 "snGradSchemes { default corrected; }\n")
-    with open(os.path.join(case, "system/fvSolution"), "w") as f:
-        f.write(header("dictionary", "fvSolution"))
-        f.write("solvers {}\n")
+    writeNoSolvers(case)
     writeDecomposeParDict(case)
 
-    with open(os.path.join(case, "constant/couplingProperties"), "w") as f:
-        f.write(header("dictionary", "couplingProperties"))
-        f.write("fluid       none;\ncloudName   dpiCloud;\n")
+    writeNoFluid(case)
     writeGravity(case, args.g)
 
     # Plain lists for the particleList injector (read as a lagrangian
@@ -608,9 +618,7 @@ def writeOpenfoam(case, x, v, L, args):
                 "divSchemes { default none; }\n"
                 "laplacianSchemes { default none; }\n"
                 "interpolationSchemes { default linear; }\n")
-    with open(os.path.join(case, "system/fvSolution"), "w") as f:
-        f.write(header("dictionary", "fvSolution"))
-        f.write("solvers {}\n")
+    writeNoSolvers(case)
     writeDecomposeParDict(case)
     writeGravity(case, args.g)
     with open(os.path.join(case, "constant/transportProperties"), "w") as f:

@@ -149,11 +149,8 @@ def writeCase(case, parts, L, steps, every, dt, note, title, N,
                 "linear; }\ndivSchemes { default none; }\nlaplacianSchemes "
                 "{ default Gauss linear corrected; }\ninterpolationSchemes "
                 "{ default linear; }\nsnGradSchemes { default corrected; }\n")
-    with open(os.path.join(case, "system/fvSolution"), "w") as f:
-        f.write(ss.header("dictionary", "fvSolution") + "solvers {}\n")
-    with open(os.path.join(case, "constant/couplingProperties"), "w") as f:
-        f.write(ss.header("dictionary", "couplingProperties"))
-        f.write("fluid none;\ncloudName dpiCloud;\n")
+    ss.writeNoSolvers(case)
+    ss.writeNoFluid(case)
     ss.writeGravity(case, (0, 0, -9.81))
     with open(os.path.join(case, "constant/powderParticles"), "w") as f:
         f.write("// %s\n" % note)

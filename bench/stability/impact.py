@@ -183,11 +183,8 @@ def write(a):
                 "linear; }\ndivSchemes { default none; }\nlaplacianSchemes "
                 "{ default Gauss linear corrected; }\ninterpolationSchemes "
                 "{ default linear; }\nsnGradSchemes { default corrected; }\n")
-    with open(os.path.join(case, "system/fvSolution"), "w") as f:
-        f.write(ss.header("dictionary", "fvSolution") + "solvers {}\n")
-    with open(os.path.join(case, "constant/couplingProperties"), "w") as f:
-        f.write(ss.header("dictionary", "couplingProperties"))
-        f.write("fluid none;\ncloudName dpiCloud;\n")
+    ss.writeNoSolvers(case)
+    ss.writeNoFluid(case)
     ss.writeGravity(case, (0, 0, 0))
     with open(os.path.join(case, "constant/dpiCloudProperties"), "w") as f:
         f.write(ss.header("dictionary", "dpiCloudProperties"))
