@@ -8,15 +8,57 @@ License
 
 #include "forceCache.H"
 #include "Map.H"
+#include <cstring>
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The splitmix64 finaliser: every input bit moves about half the output
+//  bits, so rows that differ in any bit of any component hash apart
+inline uint64_t mix(uint64_t z)
+{
+    z += 0x9e3779b97f4a7c15ULL;
+    z = (z ^ (z >> 30))*0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27))*0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
+
+uint64_t Foam::forceCache::rowHash(const demState& s, const label p)
+{
+    uint64_t h = 0;
+    for (const vector* w : {&s.x[p], &s.v[p], &s.omega[p]})
+    {
+        for (direction c = 0; c < vector::nComponents; ++c)
+        {
+            // + 0.0 makes -0 into +0: they compare equal as values
+            const double value = w->component(c) + 0.0;
+            uint64_t bits;
+            std::memcpy(&bits, &value, sizeof(bits));
+            h = mix(h ^ bits);
+        }
+    }
+    return h;
+}
+
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::forceCache::store(const demState& s)
 {
+    const label n = s.size();
     id_ = s.globalId;
-    x_ = s.x;
-    v_ = s.v;
-    omega_ = s.omega;
+    hash_.setSize(n);
+    for (label p = 0; p < n; ++p)
+    {
+        hash_[p] = rowHash(s, p);
+    }
     valid_ = true;
 }
 
@@ -30,14 +72,14 @@ bool Foam::forceCache::reuse
 {
     const label n = s.size();
 
-    if (!valid_ || n != x_.size())
+    if (!valid_ || n != hash_.size())
     {
         return false;
     }
 
     // Rows in the same order (the usual case): compare directly
     bool sameOrder = true;
-    forAll(x_, p)
+    forAll(id_, p)
     {
         if (s.globalId[p] != id_[p])
         {
@@ -68,8 +110,7 @@ bool Foam::forceCache::reuse
 
     forAll(from, p)
     {
-        const label q = from[p];
-        if (s.x[p] != x_[q] || s.v[p] != v_[q] || s.omega[p] != omega_[q])
+        if (rowHash(s, p) != hash_[from[p]])
         {
             return false;
         }
