@@ -8,25 +8,8 @@ License
 
 #include "forceCache.H"
 #include "Map.H"
+#include "splitmix.H"
 #include <cstring>
-
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
-
-namespace
-{
-
-//- The splitmix64 finaliser: every input bit moves about half the output
-//  bits, so rows that differ in any bit of any component hash apart
-inline uint64_t mix(uint64_t z)
-{
-    z += 0x9e3779b97f4a7c15ULL;
-    z = (z ^ (z >> 30))*0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27))*0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
-
-} // End anonymous namespace
-
 
 // * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * * //
 
@@ -41,7 +24,7 @@ uint64_t Foam::forceCache::rowHash(const demState& s, const label p)
             const double value = w->component(c) + 0.0;
             uint64_t bits;
             std::memcpy(&bits, &value, sizeof(bits));
-            h = mix(h ^ bits);
+            h = splitmix(h ^ bits);
         }
     }
     return h;

@@ -9,6 +9,7 @@ License
 #include "dpiTurbulentDispersion.H"
 #include "dictKeys.H"
 #include "mathematicalConstants.H"
+#include "splitmix.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -22,15 +23,6 @@ namespace Foam
 
 namespace
 {
-    //- SplitMix64 finaliser (Steele, Lea & Flood 2014): a bijective mix
-    inline uint64_t splitmix(uint64_t z)
-    {
-        z += UINT64_C(0x9e3779b97f4a7c15);
-        z = (z ^ (z >> 30))*UINT64_C(0xbf58476d1ce4e5b9);
-        z = (z ^ (z >> 27))*UINT64_C(0x94d049bb133111eb);
-        return z ^ (z >> 31);
-    }
-
     //- Uniform in (0, 1) from 53 bits of a hash
     inline double uniform01(const uint64_t h)
     {
