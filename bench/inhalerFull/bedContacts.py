@@ -12,7 +12,8 @@ per class, the API touching 0, 1 or more carriers, the API-API contacts
 whose two API touch the same single carrier, and the connected parts of
 the bed left when the carrier-carrier contacts are cut (one part holding
 most carriers: the coating alone ties the bed together, so no carrier and
-its API form a body apart).
+its API form a body apart). Needs python3-scipy (bench/packedBed/run
+installs it).
 """
 import os
 import sys
@@ -25,50 +26,21 @@ import foamLagrangian  # noqa: E402
 
 
 def touchingPairs(x, reach, cut):
-    """Pairs (i < j) with |x_i - x_j| < cut(i, j), from a grid of cells of
-    size reach (the largest cut)."""
-    cell = np.floor((x - x.min(0))/reach).astype(np.int64)
-    key = (cell[:, 0]*1000003 + cell[:, 1])*1000003 + cell[:, 2]
-    order = np.argsort(key)
-    keys, starts = np.unique(key[order], return_index=True)
-    ends = np.append(starts[1:], len(order))
-    where = dict(zip(keys.tolist(), zip(starts.tolist(), ends.tolist())))
-    pairs = []
-    for k, (s, e) in where.items():
-        members = order[s:e]
-        c = cell[members[0]]
-        for dx in (-1, 0, 1):
-            for dy in (-1, 0, 1):
-                for dz in (-1, 0, 1):
-                    nk = ((c[0] + dx)*1000003 + c[1] + dy)*1000003 + c[2] + dz
-                    if nk not in where:
-                        continue
-                    others = order[where[nk][0]:where[nk][1]]
-                    i = np.repeat(members, len(others))
-                    j = np.tile(others, len(members))
-                    keep = i < j
-                    i, j = i[keep], j[keep]
-                    r = np.linalg.norm(x[i] - x[j], axis=1)
-                    near = r < cut(i, j)
-                    pairs.append(np.stack([i[near], j[near]], 1))
-    return np.concatenate(pairs) if pairs else np.zeros((0, 2), int)
+    """Pairs (i < j) with |x_i - x_j| < cut(i, j) <= reach (as
+    bench/packedBed/bed.py finds its contacts)."""
+    from scipy.spatial import cKDTree
+    pairs = cKDTree(x).query_pairs(reach, output_type="ndarray")
+    i, j = pairs[:, 0], pairs[:, 1]
+    return pairs[np.linalg.norm(x[i] - x[j], axis=1) < cut(i, j)]
 
 
 def components(n, pairs):
-    """Label of each of n nodes' connected part (union-find)."""
-    parent = np.arange(n)
-
-    def root(a):
-        while parent[a] != a:
-            parent[a] = parent[parent[a]]
-            a = parent[a]
-        return a
-
-    for a, b in pairs:
-        ra, rb = root(a), root(b)
-        if ra != rb:
-            parent[ra] = rb
-    return np.array([root(a) for a in range(n)])
+    """Label of each of n nodes' connected part."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+    graph = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])),
+                       shape=(n, n))
+    return connected_components(graph, directed=False)[1]
 
 
 def main(case, time):
