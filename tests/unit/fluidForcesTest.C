@@ -15,6 +15,7 @@ Description
 
 #include <gtest/gtest.h>
 #include "wenYuParcel.H"
+#include "scalarList.H"
 #include "pressureGradient.H"
 #include "mathematicalConstants.H"
 
@@ -97,6 +98,55 @@ TEST(wenYuParcel, ForceIsNTimesPrimary)
     {
         const vector FN = totalForce(drag(), f, v, 5e-6, N);
         EXPECT_NEAR(mag(FN/N - F1)/mag(F1), 0, 1e-14) << "N " << N;
+    }
+}
+
+
+TEST(wenYuParcel, AlphaRangeIsTheReferencesClamp)
+{
+    FatalIOError.throwExceptions();
+
+    // The reference clamps the drag's interpolated void fraction to
+    // [0.4, 1]: below 0.4 the force is the force at 0.4, inside the range
+    // unchanged
+    dictionary clampDict;
+    clampDict.add("alphaRange", scalarList({0.4, 1}));
+    autoPtr<dpiFluidForce> clamped
+    (
+        dpiFluidForce::New("wenYuParcel", clampDict)
+    );
+    autoPtr<dpiFluidForce> plain
+    (
+        dpiFluidForce::New("wenYuParcel", dictionary())
+    );
+    const vector v(0.1, 0.2, -0.5);
+    for (const scalar alpha : {0.3, 0.4, 0.7, 1.0})
+    {
+        dpiFluidForce::fluidState f = air(alpha);
+        f.U = vector(0.3, -0.1, 2);
+        dpiFluidForce::fluidState g = air(max(alpha, 0.4));
+        g.U = f.U;
+        const vector Fc = totalForce(clamped(), f, v, 5e-6, 10);
+        const vector Fp = totalForce(plain(), g, v, 5e-6, 10);
+        EXPECT_EQ(Fc, Fp) << "alpha " << alpha;
+    }
+    // At 0.3 the clamp lowers the drag: (0.3/0.4)^-3.65 in Stokes flow
+    const vector F03 = totalForce(plain(), air(0.3), v, 5e-6, 10);
+    const vector F03c = totalForce(clamped(), air(0.3), v, 5e-6, 10);
+    EXPECT_LT(mag(F03c), mag(F03));
+
+    // A range that is not one: refused
+    const List<scalarList> bads
+    ({
+        scalarList({0.5, 0.4}), scalarList({0, 1}), scalarList({0.4, 1.2}),
+        scalarList({0.4})
+    });
+    for (const scalarList& bad : bads)
+    {
+        dictionary d;
+        d.add("alphaRange", bad);
+        EXPECT_THROW(dpiFluidForce::New("wenYuParcel", d), Foam::error)
+            << "alphaRange of " << bad.size() << " values";
     }
 }
 

@@ -51,6 +51,18 @@ for case, tol, what in [("restart", 1e-12, "restart 2 + 4 steps"),
         check(same and err <= tol, "%s: %s equal to the straight serial run "
               "(max relative difference %.2g, limit %.0e)" % (what, name, err, tol))
 
+uw, _ = byId("wale1", "UTurb")
+check(np.all(np.isfinite(uw)) and np.sqrt(np.mean(uw**2)) > 0,
+      "default (WALE, agglomerate): u* written, rms %.4g m/s (Smagorinsky's "
+      "%.4g)" % (np.sqrt(np.mean(uw**2)), rms))
+for name in ("UTurb", "U", "xDEM"):
+    a, ia = byId("wale1", name)
+    b, ib = byId("wale2", name)
+    same = len(ia) == len(ib) and np.all(ia == ib)
+    err = np.abs(a - b).max()/max(np.abs(a).max(), 1e-300) if same else np.inf
+    check(same and err <= 1e-10, "default, 2 processes: %s equal to serial "
+          "(max relative difference %.2g, limit 1e-10)" % (name, err))
+
 us, _ = byId("substep", "UTurb")
 r = np.mean(us**2)/np.mean(u**2)
 # two independent samples of 300: each sample variance has a relative

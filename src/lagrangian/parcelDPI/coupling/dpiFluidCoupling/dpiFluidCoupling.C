@@ -202,7 +202,7 @@ void Foam::dpiFluidCoupling::advanceDispersion
     {
         fluid_[i].Uturb = dispersion_->update
         (
-            fluid_[i].Uturb, sgs_[i], dt, s.globalId[i], step, sub
+            fluid_[i].Uturb, sgs_[i], dt, dispersionKey_[i], step, sub
         );
     }
 }
@@ -238,6 +238,7 @@ void Foam::dpiFluidCoupling::packStates
         {
             sca[col::k][i] = sgs_[i].k;
             sca[col::tau][i] = sgs_[i].tau;
+            sca[col::key][i] = dispersionKey_[i];
         }
         sca[col::gasFree][i] = fl.gasFree ? 1 : 0;
     }

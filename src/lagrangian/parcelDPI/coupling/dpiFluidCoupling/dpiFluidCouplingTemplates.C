@@ -48,9 +48,11 @@ void Foam::dpiFluidCoupling::sample(const CloudType& cloud, const demState& s)
         Pstream::parRun() ? &unresolved : nullptr;
     DynamicList<point> remotePts;
     DynamicList<label> remoteRow;
+    labelList aggId;
     if (dispersion_.valid())
     {
         sgs_.setSize(nRows_);
+        aggId.setSize(nRows_);
     }
 
     autoPtr<interpolation<vector>> UInterp
@@ -109,10 +111,11 @@ void Foam::dpiFluidCoupling::sample(const CloudType& cloud, const demState& s)
             fl.Uturb = p.UTurb();
             sgs_[i] = dispersion_->closure
             (
-                dispersion_->magS(tgradU()[celli]),
+                tgradU()[celli],
                 dispersion_->delta(mesh_.V()[celli]),
                 fl.nu
             );
+            aggId[i] = p.agglomerateId();
         }
         fl.gasFree = !gasFreeCell_.empty() && gasFreeCell_[celli];
         fl.gradp = Zero;
@@ -155,6 +158,25 @@ void Foam::dpiFluidCoupling::sample(const CloudType& cloud, const demState& s)
         ++i;
     }
     spreadStart_[nRows_] = spreadCells_.size();
+
+    // The parcels of an agglomerate of the last step share one u*
+    if (dispersion_.valid())
+    {
+        vectorField uStar(nRows_);
+        for (label j = 0; j < nRows_; ++j)
+        {
+            uStar[j] = fluid_[j].Uturb;
+        }
+        dispersionKey_.setSize(nRows_);
+        dispersion_->share
+        (
+            aggId, rowId_, rowMass_, uStar, sgs_, dispersionKey_
+        );
+        for (label j = 0; j < nRows_; ++j)
+        {
+            fluid_[j].Uturb = uStar[j];
+        }
+    }
 
     // Who holds the points outside this sub-domain (collective); those no
     // processor holds are outside the mesh: the row's own cell (which

@@ -35,6 +35,7 @@ Foam::dpiSubStepForces::dpiSubStepForces
     uNext_(refresh > 1 ? n : 0, 0),
     fluid_(n),
     sgs_(n),
+    key_(n, 0),
     Su_(refresh > 1 ? n : 0),
     Sp_(refresh > 1 ? n : 0),
     SuCoupled_(refresh > 1 ? n : 0),
@@ -54,6 +55,7 @@ Foam::dpiSubStepForces::dpiSubStepForces
         fl.nu = scaIn[col::nu][i];
         sgs_[i].k = scaIn[col::k][i];
         sgs_[i].tau = scaIn[col::tau][i];
+        key_[i] = label(scaIn[col::key][i]);
         fl.gasFree = (scaIn[col::gasFree][i] > 0.5);
     }
 
@@ -90,7 +92,7 @@ void Foam::dpiSubStepForces::setForces(const label sub, demState& s)
             {
                 fl.Uturb = dispersion_->update
                 (
-                    fl.Uturb, sgs_[i], dt_, s.globalId[i], timeIndex_, sub + 1
+                    fl.Uturb, sgs_[i], dt_, key_[i], timeIndex_, sub + 1
                 );
             }
             dpiFluidForce::sum
@@ -114,7 +116,7 @@ void Foam::dpiSubStepForces::setForces(const label sub, demState& s)
                 const label nU = min(uInterval_[i], nSub_ - sub);
                 fluid_[i].Uturb = dispersion_->update
                 (
-                    fluid_[i].Uturb, sgs_[i], nU*dt_, s.globalId[i],
+                    fluid_[i].Uturb, sgs_[i], nU*dt_, key_[i],
                     timeIndex_, sub + 1
                 );
                 uNext_[i] = sub + nU;

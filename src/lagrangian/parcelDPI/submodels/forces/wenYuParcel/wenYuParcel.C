@@ -8,6 +8,7 @@ License
 
 #include "wenYuParcel.H"
 #include "mathematicalConstants.H"
+#include "scalarList.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -30,8 +31,31 @@ Foam::dpiFluidForces::wenYuParcel::wenYuParcel
     const dictionary& coeffs
 )
 :
-    dpiFluidForce(name, coeffs, wordList())    // reads no coefficients
-{}
+    dpiFluidForce(name, coeffs, wordList({"alphaRange"})),
+    alphaLow_(0),
+    alphaHigh_(1)
+{
+    if (coeffs.found("alphaRange"))
+    {
+        const scalarList range(coeffs.get<scalarList>("alphaRange"));
+        if
+        (
+            range.size() != 2 || range[0] <= 0 || range[0] >= range[1]
+         || range[1] > 1
+        )
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "wenYuParcel/alphaRange " << range << " in "
+                << coeffs.name() << ": give (low high) with 0 < low < high"
+                << " <= 1, e.g. (0.4 1) as the reference"
+                << exit(FatalIOError);
+        }
+        alphaLow_ = range[0];
+        alphaHigh_ = range[1];
+        Info<< "    wenYuParcel: the drag's void fraction clamped to ["
+            << alphaLow_ << ", " << alphaHigh_ << "]" << endl;
+    }
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -84,7 +108,8 @@ Foam::dpiFluidForce::forceSuSp Foam::dpiFluidForces::wenYuParcel::force
     const vector Ur(fluid.U + fluid.Uturb - v);
 
     forceSuSp F;
-    F.Sp = primarySp(d, fluid.alpha, fluid.rho, fluid.nu, mag(Ur));
+    const scalar alpha = min(max(fluid.alpha, alphaLow_), alphaHigh_);
+    F.Sp = primarySp(d, alpha, fluid.rho, fluid.nu, mag(Ur));
     return F;
 }
 
