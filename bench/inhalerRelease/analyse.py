@@ -27,7 +27,7 @@ ap.add_argument("--output", default="results")
 a = ap.parse_args()
 
 ORDER = ["default", "WALEparcel", "SmagorinskyShared", "Smagorinsky",
-         "legacy", "off"]
+         "legacy", "guide", "off"]
 WHAT = {
     "default": "the tutorial (closure WALE, sharing agglomerate)",
     "WALEparcel": "sharing parcel (each parcel its own u*)",
@@ -35,9 +35,11 @@ WHAT = {
     "Smagorinsky": "closure Smagorinsky, sharing parcel (the default before)",
     "legacy": "legacyTimeScale yes (the guide's dispersion)",
     "off": "no turbulentDispersion",
+    "guide": "Allrun -guide (every model the guide's)",
 }
 COLS = ["FPF_box", "FPF_system", "released", "inDevice", "bedLeft",
-        "emittedSinglets", "emittedAgglomerates", "emittedOnCarriers", "wall"]
+        "emittedSinglets", "emittedAgglomerates", "emittedOnCarriers",
+        "deposited", "airborne", "wall"]
 
 
 def number(pattern, text, group=1):
@@ -75,6 +77,19 @@ def measure(case):
         r["emittedSinglets"] = last[3]/loaded if loaded else float("nan")
         r["emittedAgglomerates"] = last[4]/loaded if loaded else float("nan")
         r["emittedOnCarriers"] = last[5]/loaded if loaded else float("nan")
+        # the API left in the device: deposited on its walls, or neither
+        # on a carrier nor on a wall (airborne, or on other API)
+        ret = {}
+        for path in glob.glob(os.path.join(case, "postProcessing/retention/"
+                                                 "*/retention*.dat")):
+            for line in open(path):
+                if not line.startswith("#") and line.strip():
+                    v = [float(x) for x in line.split()]
+                    ret[v[0]] = v
+        if ret and loaded:
+            v = ret[max(ret)]
+            r["deposited"] = (v[1] - v[2] - v[3])/loaded
+            r["airborne"] = v[3]/loaded
     r["wall"] = float(open(os.path.join(case, "done")).read().split()[0])
     return r
 
@@ -124,7 +139,9 @@ SHOW = [("FPF_box", "FPF_box over the dumps", "%.3f"),
         ("inDevice", "API primaries in the device at the end", "%.0f"),
         ("bedLeft", "half the carriers moved by [s]", "%.3f"),
         ("emittedAgglomerates", "API left in API-only clusters / loaded", "%.3f"),
-        ("emittedOnCarriers", "API left on carriers / loaded", "%.3f")]
+        ("emittedOnCarriers", "API left on carriers / loaded", "%.3f"),
+        ("deposited", "API deposited on the walls / loaded", "%.3f"),
+        ("airborne", "API in the device on no carrier or wall / loaded", "%.3f")]
 lines = ["| variant | seeds | " + " | ".join(s[1] for s in SHOW)
          + " | released / default's |",
          "|---|---|" + "---|"*len(SHOW) + "---|"]
