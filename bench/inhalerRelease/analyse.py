@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """The inhaler release ablation's table, from bench/inhalerRelease's cases.
 
     analyse.py CASES [--output DIR]
@@ -12,7 +12,11 @@ had moved 1 mm or left; from postProcessing/emittedDose the emitted API by
 class (singlets, API-only agglomerates, on carriers) over the API loaded.
 Writes DIR/results.csv (one row per run) and DIR/results.md (mean and
 sample standard deviation over the seeds of each variant, and the ratio of
-each variant's mean to the default's), and prints the table.
+each variant's mean to the default's), DIR/inhalerRelease.png (where the
+API loaded went, per variant, stacked: left as singlets, in API-only
+clusters, on carriers, deposited on the walls, elsewhere in the device; the
+mean over the seeds, the seeds' spread of the singlets as error bars), and
+prints the table.
 """
 import argparse
 import glob
@@ -162,3 +166,39 @@ with open(os.path.join(a.output, "results.md"), "w") as f:
             "(turbulentDispersion/seed 0, 1, ...); one run for off.\n\n"
             + text + "\n")
 print(text)
+
+
+# Where the API loaded went, per variant: a stacked bar of the means
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+parts = [("emittedSinglets", "left as singlets", "tab:green"),
+         ("emittedAgglomerates", "left in API-only clusters", "tab:olive"),
+         ("emittedOnCarriers", "left on carriers", "tab:blue"),
+         ("deposited", "deposited on the walls", "tab:red"),
+         ("airborne", "in the device, on no carrier or wall", "tab:gray")]
+fig, ax = plt.subplots(figsize=(1.6*len(variants) + 3, 4.5))
+bottom = [0.0]*len(variants)
+for key, label, color in parts:
+    means = [table[v][key][0] if not math.isnan(table[v][key][0]) else 0
+             for v in variants]
+    err = None
+    if key == "emittedSinglets":
+        err = [table[v][key][1] if not math.isnan(table[v][key][1]) else 0
+               for v in variants]
+    ax.bar(range(len(variants)), means, bottom=bottom, color=color,
+           label=label, yerr=err, capsize=4)
+    bottom = [b + m for b, m in zip(bottom, means)]
+ax.axhspan(0.10, 0.30, color="k", alpha=0.08,
+           label="van Wachem et al. 2017: 10-30 % released")
+ax.set_xticks(range(len(variants)))
+ax.set_xticklabels(["%s\n(%d)" % (v, len(by[v])) for v in variants])
+ax.set_ylabel("fraction of the API loaded, at 0.11 s")
+ax.set_ylim(0, 1.05)
+ax.set_title("Inhaler, release size (quick bed, the guide's breath): "
+             "where the API went\n(mean over the seeds; error bar: the "
+             "seeds' spread of the singlets)", fontsize=9)
+ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1))
+fig.tight_layout()
+fig.savefig(os.path.join(a.output, "inhalerRelease.png"), dpi=110)
