@@ -51,6 +51,18 @@ def number(pattern, text, group=1):
     return float(m.group(group)) if m else float("nan")
 
 
+def lastRow(case, pattern):
+    """The latest time's row of a function object's series, joined over the
+    files of its restarts (postProcessing/PATTERN), or None"""
+    rows = {}
+    for path in glob.glob(os.path.join(case, "postProcessing", pattern)):
+        for line in open(path):
+            if not line.startswith("#") and line.strip():
+                v = [float(x) for x in line.split()]
+                rows[v[0]] = v
+    return rows[max(rows)] if rows else None
+
+
 def measure(case):
     r = {}
     log = open(os.path.join(case, "Allrun.resume.log")).read()
@@ -68,30 +80,16 @@ def measure(case):
                 if float(f[2].rstrip("%")) >= 50:
                     r["bedLeft"] = float(f[0])
                     break
-    rows = {}
-    for path in glob.glob(os.path.join(case, "postProcessing/emittedDose/*/"
-                                             "emittedDose*.dat")):
-        for line in open(path):
-            if not line.startswith("#") and line.strip():
-                v = [float(x) for x in line.split()]
-                rows[v[0]] = v
-    if rows:
-        last = rows[max(rows)]
+    last = lastRow(case, "emittedDose/*/emittedDose*.dat")
+    if last:
         loaded = last[1]
         r["emittedSinglets"] = last[3]/loaded if loaded else float("nan")
         r["emittedAgglomerates"] = last[4]/loaded if loaded else float("nan")
         r["emittedOnCarriers"] = last[5]/loaded if loaded else float("nan")
         # the API left in the device: deposited on its walls, or neither
         # on a carrier nor on a wall (airborne, or on other API)
-        ret = {}
-        for path in glob.glob(os.path.join(case, "postProcessing/retention/"
-                                                 "*/retention*.dat")):
-            for line in open(path):
-                if not line.startswith("#") and line.strip():
-                    v = [float(x) for x in line.split()]
-                    ret[v[0]] = v
-        if ret and loaded:
-            v = ret[max(ret)]
+        v = lastRow(case, "retention/*/retention*.dat")
+        if v and loaded:
             r["deposited"] = (v[1] - v[2] - v[3])/loaded
             r["airborne"] = v[3]/loaded
     r["wall"] = float(open(os.path.join(case, "done")).read().split()[0])

@@ -44,33 +44,6 @@ namespace
     {
         return (double(h >> 11) + 0.5)*(1.0/9007199254740992.0);
     }
-
-    //- An Enum key of dict: its default when absent, a FatalIOError naming
-    //  the dictionary, the key and the valid choices when not one of them
-    template<class EnumType>
-    EnumType readChoice
-    (
-        const Foam::dictionary& dict,
-        const Foam::word& key,
-        const Foam::Enum<EnumType>& names,
-        const EnumType deflt
-    )
-    {
-        if (!dict.found(key))
-        {
-            return deflt;
-        }
-        const Foam::word name(dict.get<Foam::word>(key));
-        if (!names.found(name))
-        {
-            FatalIOErrorInFunction(dict)
-                << "turbulentDispersion/" << key << " " << name
-                << " is not one of " << names.sortedToc()
-                << " (in " << dict.name() << ")"
-                << Foam::exit(Foam::FatalIOError);
-        }
-        return names[name];
-    }
 }
 
 
@@ -83,17 +56,17 @@ Foam::dpiTurbulentDispersion::dpiTurbulentDispersion(const dictionary& dict)
     // parcel its own u*
     closure_
     (
-        readChoice
+        closureNames.getOrDefault
         (
-            dict, "closure", closureNames,
+            "closure", dict,
             legacyTimeScale_ ? closureType::Smagorinsky : closureType::WALE
         )
     ),
     sharing_
     (
-        readChoice
+        sharingNames.getOrDefault
         (
-            dict, "sharing", sharingNames,
+            "sharing", dict,
             legacyTimeScale_ ? sharingType::parcel : sharingType::agglomerate
         )
     ),
