@@ -10,6 +10,17 @@ License
 #include "emptyPolyPatch.H"
 #include "wedgePolyPatch.H"
 
+// * * * * * * * * * * * * * * * Local Constants  * * * * * * * * * * * * * //
+
+namespace
+{
+    // Time directories a run may write before it is warned: each holds the
+    // cloud and the fields, and a list of them is what a user browses (the
+    // tutorials write at most a few hundred)
+    const Foam::scalar maxWrites = 10000;
+}
+
+
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
 
 void Foam::runStartCheck::timeControls(const Time& runTime)
@@ -32,6 +43,55 @@ void Foam::runStartCheck::timeControls(const Time& runTime)
             << " a whole number of dem/timeStep" << exit(FatalIOError);
     }
 
+    // OpenFOAM counts the steps in a label (Time::timeIndex, and the
+    // writeControl timeStep test on it): a deltaT so small that the steps
+    // to endTime overflow it is a run that cannot end (deltaT 1e-30 to
+    // 3e-7 s looped near 1e-25 s, a time directory every 10 steps)
+    const scalar tEnd = runTime.endTime().value();
+    const bool toEndTime =
+        runTime.stopAt() == Time::stopAtControls::saEndTime && tEnd > t0;
+    const scalar nSteps = toEndTime ? (tEnd - t0)/dt : 0;
+    if (nSteps > labelMax)
+    {
+        FatalIOErrorInFunction(control)
+            << "deltaT " << dt << " in " << control.name() << " makes "
+            << nSteps << " steps from " << runTime.timeName()
+            << " to endTime " << Time::timeName(tEnd) << ", more than the "
+            << labelMax << " OpenFOAM can count: the run would not end."
+            << nl << "    Set deltaT to the fluid step (the coupling"
+            << " interval, a whole number of dem/timeStep), e.g. "
+            << (tEnd - t0)/1000 << " for 1000 steps"
+            << exit(FatalIOError);
+    }
+
+    // A write every few steps of a long run fills the disk with time
+    // directories: said before the first one (purgeWrite keeps only the
+    // last few, so it is not a flood)
+    const label purge = control.getOrDefault<label>("purgeWrite", 0);
+    const scalar interval =
+        control.getOrDefault<scalar>("writeInterval", GREAT);
+    const word writeCtrl(control.getOrDefault<word>("writeControl", "timeStep"));
+    scalar nWrites = 0;
+    if (writeCtrl == "timeStep")
+    {
+        nWrites = nSteps/max(interval, 1);
+    }
+    else if (writeCtrl == "runTime" || writeCtrl == "adjustableRunTime")
+    {
+        nWrites = (tEnd - t0)/max(interval, dt);
+    }
+    if (purge <= 0 && nWrites > maxWrites)
+    {
+        WarningInFunction
+            << "writeControl " << writeCtrl << ", writeInterval " << interval
+            << " and deltaT " << dt << " in " << control.name()
+            << " write about " << nWrites << " time directories to endTime "
+            << Time::timeName(tEnd) << " (more than " << maxWrites << ")."
+            << nl << "    A larger writeInterval, or purgeWrite N to keep the"
+            << " last N, saves the disk; the function objects' time series"
+            << " in postProcessing/ do not need written times" << endl;
+    }
+
     // Nothing to do is not an error (a restart at the end), but say so
     if
     (
@@ -52,7 +112,6 @@ void Foam::runStartCheck::timeControls(const Time& runTime)
     {
         return;
     }
-    const scalar tEnd = runTime.endTime().value();
     for (const entry& e : *functions)
     {
         if (!e.isDict())

@@ -12,6 +12,7 @@ License
 #include "demContact.H"
 #include "dictKeys.H"
 #include "polyMesh.H"
+#include "Time.H"
 #include "IOmanip.H"
 #include <algorithm>
 #include <chrono>
@@ -293,6 +294,38 @@ Foam::demEngine::demEngine(const dictionary& dict, const polyMesh* mesh)
     (
         dict, timeStep_, materials_, models_.normal(), walls_.materials()
     );
+
+    // The fluid step (controlDict deltaT) is run as a whole number of DEM
+    // steps: checked here, before any parcel is read, rather than at the
+    // first step. A fluid step below one DEM step would run no DEM step at
+    // all while the time loop goes on, and one of more DEM steps than a
+    // label counts would trap in the conversion
+    if (mesh)
+    {
+        const scalar Dt = mesh->time().deltaTValue();
+        const scalar ratio = Dt/timeStep_;
+        if (!(ratio < labelMax) || ratio < 1 - 1e-6)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'timeStep' = " << timeStep_ << " s in dictionary "
+                << dict.name() << " against the fluid step deltaT " << Dt
+                << " s of " << mesh->time().controlDict().name() << ": "
+                << (
+                       ratio < 1
+                     ? "the fluid step is shorter than one DEM step, so no"
+                       " DEM step would ever run"
+                     : "the fluid step would hold " + Foam::name(ratio)
+                     + " DEM steps, more than the "
+                     + Foam::name(labelMax) + " a step can count"
+                   ).c_str()
+                << "." << nl
+                << "    deltaT must be a whole number of DEM timeSteps,"
+                << " from 1 to " << labelMax << " (the tutorials use 1 to"
+                << " 100; timeStepCheck gives the stable DEM step)"
+                << exit(FatalIOError);
+        }
+        nSubSteps(Dt);
+    }
 }
 
 
