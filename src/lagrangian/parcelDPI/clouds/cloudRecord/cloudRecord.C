@@ -12,6 +12,7 @@ License
 #include "OSspecific.H"
 #include "stringOps.H"
 #include "cloud.H"
+#include "IFstream.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -155,10 +156,40 @@ void Foam::cloudRecord::checkCloudPresent
         (
             writtenTimes::lastComplete(time.path(), time.value(), cloudName)
         );
+        // OpenFOAM reads the parcels from the one file that 'geometry' in
+        // the time's cloudProperties names (coordinates since v1706): say
+        // which, and whether the other is there (a file lost or renamed)
+        const fileName propsPath
+        (
+            time.path()/time.timeName()/"uniform"/cloud::prefix/cloudName
+           /"cloudProperties"
+        );
+        word geometry("coordinates");
+        if (isFile(propsPath))
+        {
+            IFstream is(propsPath);
+            geometry =
+                dictionary(is).getOrDefault<word>("geometry", "positions");
+        }
+        const word other(geometry == "positions" ? "coordinates" : "positions");
+        const fileName readFile(time.path()/cloudDir/geometry);
+        std::string why
+        (
+            isFile(readFile) || isFile(readFile + ".gz")
+          ? "is empty"
+          : "is missing"
+        );
+        if (isFile(time.path()/cloudDir/other))
+        {
+            why += "; " + other + " is there, but OpenFOAM reads the parcels"
+                " from " + geometry + " ('geometry " + geometry + "' in "
+              + time.timeName() + "/uniform/" + cloud::prefix + "/"
+              + cloudName + "/cloudProperties)";
+        }
         FatalIOErrorInFunction(outputProperties)
             << "Time " << time.timeName() << " has no parcels of"
-            << " cloud " << cloudName << " (" << cloudDir << "/positions"
-            << " not found or empty), but the cloud state in "
+            << " cloud " << cloudName << " (" << (cloudDir/geometry).c_str() << " "
+            << why.c_str() << "), but the cloud state in "
             << outputProperties.objectPath() << " says " << nIssued
             << " parcels were issued and " << nGone << " left the domain."
             << nl << "    Restart from a time written with the cloud";

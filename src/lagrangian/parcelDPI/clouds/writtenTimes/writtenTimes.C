@@ -158,28 +158,47 @@ Foam::word Foam::writtenTimes::startTimeName(const fileName& casePath)
 void Foam::writtenTimes::checkStartWritten(const fileName& casePath)
 {
     const dictionary dict(controlDict(casePath));
-    if
-    (
-        dict.empty()
-     || dict.getOrDefault<word>("startFrom", "startTime") != "startTime"
-    )
+    const instantList ts(times(casePath));
+    const word startFrom(dict.getOrDefault<word>("startFrom", "startTime"));
+    if (dict.empty() || startFrom == "firstTime" || startFrom == "noTime")
     {
-        return;     // latestTime, firstTime: a written time (or none)
+        return;     // nothing written can come before the first time
     }
-    const scalar startTime = dict.getOrDefault<scalar>("startTime", 0);
+    if (startFrom == "latestTime" && ts.empty())
+    {
+        return;     // Time says what is wrong
+    }
+    const scalar startTime =
+    (
+        startFrom == "latestTime"
+      ? ts.last().value()
+      : dict.getOrDefault<scalar>("startTime", 0)
+    );
 
     // The times a run wrote (Time writes uniform/time with each), and the
-    // latest of them before the start. A start time that was never
-    // written, after such a time, starts with no parcels and no cloud
-    // state, and writes its own times among the old run's: refused
+    // latest of them before the start. A start time that a run did not
+    // write (never written, or a directory without uniform/time: made by
+    // hand, left empty by a killed run or a stray mkdir), after such a
+    // time, starts with no parcels and no cloud state, and writes its own
+    // times among the old run's: refused
     DynamicList<word> runTimes;
     word before;
-    bool found = false;     // written: checkStart looks at it
-    for (const instant& t : times(casePath))
+    bool found = false;     // the start time's directory is there
+    bool written = false;   // and a run wrote it: checkStart looks at it
+    fileNameList startFiles;
+    for (const instant& t : ts)
     {
-        found = found || t.equal(startTime);
         const fileName dir(casePath/t.name()/"uniform");
-        if (isFile(dir/"time") || isFile(dir/"time.gz"))
+        const bool runOutput = isFile(dir/"time") || isFile(dir/"time.gz");
+        if (t.equal(startTime))
+        {
+            found = true;
+            written = runOutput;
+            DynamicList<fileName> files;
+            listFiles(casePath/t.name(), fileName::null, files);
+            startFiles = std::move(files);
+        }
+        if (runOutput)
         {
             runTimes.append(t.name());
             if (t.value() < startTime)
@@ -191,33 +210,64 @@ void Foam::writtenTimes::checkStartWritten(const fileName& casePath)
 
     // Processor directories hold the same times: the master's decision,
     // taken by all (no processor leaves before the others)
-    wordList written(std::move(runTimes));
+    wordList runWritten(std::move(runTimes));
     Pstream::scatter(found);
-    Pstream::scatter(before);
     Pstream::scatter(written);
-    if (found || before.empty())
+    Pstream::scatter(startFiles);
+    Pstream::scatter(before);
+    Pstream::scatter(runWritten);
+    if (written || before.empty())
     {
-        return;     // written, or a fresh start: no run wrote before it
+        return;     // a run's output, or a fresh start: no run wrote before
     }
     if (!Pstream::master())
     {
         Pstream::exit(1);
     }
+    const word startName(Time::timeName(startTime));
     FatalIOErrorInFunction(dict)
-        << "startTime " << startTime << " in " << dict.name() << " is not a"
-        << " written time of this case (startFrom startTime): the run would"
-        << " start with no parcels and no cloud state, after the times a"
-        << " run wrote up to " << written.last() << "." << nl
-        << "    Set startTime to a written time (the latest before "
-        << startTime << " is " << before << "; written:";
-    for (const word& t : written)
+        << "Time " << startName << ", where this run would start (startFrom "
+        << startFrom << " in " << dict.name() << "), ";
+    if (!found)
+    {
+        FatalIOError<< "is not a written time of this case";
+    }
+    else
+    {
+        FatalIOError
+            << "was not written by a run (no uniform/time; "
+            << (
+                   startFiles.empty()
+                 ? word("the directory is empty")
+                 : word(Foam::name(startFiles.size()) + (startFiles.size() == 1 ? " file" : " files"))
+               )
+            << ")";
+    }
+    FatalIOError
+        << ": the run would start with no parcels and no cloud state, after"
+        << " the times a run wrote up to " << runWritten.last() << "." << nl
+        << "    ";
+    if (found)
+    {
+        FatalIOError
+            << "Remove it (rm -r " << startName << ") to go on from "
+            << runWritten.last() << ", or set 'startFrom startTime;"
+            << " startTime " << before << ";'. Written:";
+    }
+    else
+    {
+        FatalIOError
+            << "Set startTime to a written time (the latest before "
+            << startName << " is " << before << "; written:";
+    }
+    for (const word& t : runWritten)
     {
         FatalIOError<< ' ' << t;
     }
     FatalIOError
-        << ") or startFrom latestTime; to start"
-        << " again from the initial conditions, remove the written times"
-        << " first." << exit(FatalIOError);
+        << (found ? "." : ") or startFrom latestTime")
+        << " To start again from the initial conditions, remove the"
+        << " written times first." << exit(FatalIOError);
 }
 
 
