@@ -22,16 +22,41 @@ Foam::labelHashSet Foam::devicePatches::select
 )
 {
     const wordRes names(dict.get<wordRes>(key));
-    const labelHashSet ids(pbm.patchSet(names, false, true));
-    if (ids.empty())
+    const wordList allPatches(pbm.names());     // a copy: SubList refers to it
+    const SubList<word> meshPatches(allPatches, pbm.nNonProcessor());
+
+    // Each entry must select a patch: a misspelt name among right ones
+    // would otherwise drop that patch's parcels from the counts silently
+    std::string unmatched;
+    label nUnmatched = 0;
+    for (const wordRe& name : names)
+    {
+        bool matched = false;
+        for (const word& patch : meshPatches)
+        {
+            matched = matched || name.match(patch);
+        }
+        if (!matched)
+        {
+            unmatched += (nUnmatched++ ? " " : "") + name;
+        }
+    }
+    if (names.empty() || nUnmatched)
     {
         FatalIOErrorInFunction(dict)
             << "Function object " << who << ": `" << key << "` " << names
-            << " names no patch of the mesh (patches: "
-            << SubList<word>(pbm.names(), pbm.nNonProcessor()) << ")."
-            << exit(FatalIOError);
+            << (
+                   names.empty()
+                 ? std::string(" is empty")
+                 : ": " + unmatched + (nUnmatched > 1 ? " name" : " names")
+                 + " no patch of the mesh"
+               ).c_str()
+            << " (patches: " << meshPatches << ")." << nl
+            << "    Name each patch as in constant/polyMesh/boundary, or a"
+            << " regular expression in quotes (\"inlet.*\") that matches at"
+            << " least one" << exit(FatalIOError);
     }
-    return ids;
+    return pbm.patchSet(names, false, true);
 }
 
 

@@ -33,6 +33,10 @@ namespace
     //- Unit density of the aerodynamic diameter [kg/m3]
     const Foam::scalar rho0 = 1000;
 
+    //- The largest cutOff [m]: an inhaler's largest particles, carriers, are
+    //  below 0.2 mm; 1 mm and up is a diameter typed in other units
+    const Foam::scalar maxCutOff = 1e-3;
+
     //- The state's keys of the totals, in the order of fields()
     const char* const keys[] =
     {
@@ -374,12 +378,17 @@ bool Foam::functionObjects::dpiEmittedDose::read(const dictionary& dict)
 
     cutOff_ = dict.lookupOrDefault<scalar>("cutOff", 5e-6);
     shapeFactor_ = dict.lookupOrDefault<scalar>("shapeFactor", 1.15);
-    if (cutOff_ <= 0 || shapeFactor_ < 1)
+    // cutOff is an aerodynamic diameter in metres: 1 mm and up is no
+    // particle of an inhaler (carriers are below 0.2 mm), but a diameter
+    // typed in micrometres (cutOff 5), which would count every parcel fine
+    if (!(cutOff_ > 0) || cutOff_ >= maxCutOff || shapeFactor_ < 1)
     {
         FatalIOErrorInFunction(dict)
             << "Function object " << name() << ": cutOff " << cutOff_
-            << " [m] must be > 0 and shapeFactor " << shapeFactor_
-            << " >= 1 (1 is a sphere)." << exit(FatalIOError);
+            << " [m] must be > 0 and below " << maxCutOff << " m, and"
+            << " shapeFactor " << shapeFactor_ << " >= 1 (1 is a sphere)."
+            << nl << "    cutOff is an aerodynamic diameter in metres: the"
+            << " pharmacopoeia's 5 um is cutOff 5e-6" << exit(FatalIOError);
     }
 
     sizeClasses_ =
