@@ -7,6 +7,7 @@ License
 \*---------------------------------------------------------------------------*/
 
 #include "wallContacts.H"
+#include "polyMesh.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -19,6 +20,49 @@ void Foam::wallContacts::prepare(const scalar reach)
         for (demWall& w : walls_)
         {
             w.prepare(reach_);
+        }
+    }
+}
+
+
+void Foam::wallContacts::checkAgainstMesh
+(
+    const dictionary& wallsDict,
+    const polyMesh& mesh
+) const
+{
+    // The parcels live in the mesh: a wall only acts where it meets it. A
+    // wall that lies beyond the mesh by more than the mesh's own size is
+    // in other units (mm for m: 1000x; cm: 100x), and the parcels meet no
+    // wall where the device has one. Within that, a part beyond the mesh
+    // is harmless (an STL of more than the meshed part) but said; a
+    // snapped mesh lies within a cell of its STL, well below 5 %
+    const boundBox meshBb(mesh.points(), true);
+    const scalar size = mag(meshBb.span());
+    forAll(walls_, wi)
+    {
+        const demWall& w = walls_[wi];
+        const dictionary& wd = wallsDict.subDict(w.name());
+        const scalar d = w.beyond(meshBb);
+        if (d > size)
+        {
+            FatalIOErrorInFunction(wd)
+                << "Wall " << w.name() << " in " << wallsDict.name()
+                << " reaches " << d << " m beyond the mesh (bounds "
+                << meshBb.min() << ' ' << meshBb.max() << ", "
+                << size << " m across): " << d/size << " times the mesh's"
+                << " size." << nl
+                << "    Walls are in metres, as the mesh: an STL in mm needs"
+                << " `scale 1e-3;` in the wall's dictionary"
+                << exit(FatalIOError);
+        }
+        if (d > 0.05*size)
+        {
+            WarningInFunction
+                << "Wall " << w.name() << " in " << wallsDict.name()
+                << " reaches " << d << " m beyond the mesh (bounds "
+                << meshBb.min() << ' ' << meshBb.max() << "): no parcel"
+                << " gets there. Is it the device's wall, in metres?" << endl;
         }
     }
 }
@@ -63,6 +107,11 @@ Foam::wallContacts::wallContacts
         walls_.set(wi, demWall::New(names[wi], wd, mesh));
         material_[wi] =
             materials.typeIndex(walls_[wi].material(), wd, "material");
+    }
+
+    if (mesh)
+    {
+        checkAgainstMesh(*wallsDict, *mesh);
     }
 }
 

@@ -49,6 +49,20 @@ Foam::demWalls::planeWall::planeWall
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::scalar Foam::demWalls::planeWall::beyond(const boundBox& bb) const
+{
+    const pointField corners(bb.points());
+    scalar lo = GREAT, hi = -GREAT;
+    for (const point& c : corners)
+    {
+        const scalar h = (c - origin_) & normal_;
+        lo = min(lo, h);
+        hi = max(hi, h);
+    }
+    return (lo > 0 ? lo : hi < 0 ? -hi : 0);
+}
+
+
 void Foam::demWalls::planeWall::findContacts
 (
     const point& x,

@@ -186,6 +186,17 @@ Foam::point Foam::demWalls::triangleWall::closestPoint
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::scalar Foam::demWalls::triangleWall::beyond(const boundBox& bb) const
+{
+    scalar d = 0;
+    for (const point& p : points_)
+    {
+        d = max(d, mag(p - bb.nearest(p)));
+    }
+    return d;
+}
+
+
 void Foam::demWalls::triangleWall::prepare(const scalar reach)
 {
     if (reach_ >= reach && !cells_.empty())
