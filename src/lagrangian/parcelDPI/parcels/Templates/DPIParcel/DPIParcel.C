@@ -63,10 +63,35 @@ bool Foam::DPIParcel<ParcelType>::move
 
     // Re-entered after every processor-transfer round (Cloud::move): the
     // loop condition makes a finished parcel (stepFraction 1) do nothing.
+    //
+    // The displacement to the DEM position is taken once per call and its
+    // remaining share tracked, as the stock KinematicParcel tracks a fixed
+    // f*s. Re-aimed after every face (xDEM - position()), a parcel moving
+    // within a mesh face's plane bounced between the two cells for ever:
+    // position() rounds differently in each cell, the new aim points into
+    // the face from both sides, and the track hits it at zero fraction
+    // (a parcel on x = 3e-3 of case1ParticleWall; 100,000 parcels on a
+    // lattice through mesh faces)
+    const scalar f0 = 1 - this->stepFraction();
+    const vector s(xDEM_ - this->position());
+    label nStuck = 0;
+    const label maxStuckFaces = 1000;   // a parcel crosses a few per step
     while (td.keepParticle && !td.switchProcessor && this->stepFraction() < 1)
     {
         const scalar f = 1 - this->stepFraction();
-        this->trackToAndHitFace(xDEM_ - this->position(), f, cloud, td);
+        this->trackToAndHitFace((f/f0)*s, f, cloud, td);
+
+        // Safety net: a track that makes no progress for many faces ends
+        // here; the DEM position stays the parcel's (xDEM_), the mesh
+        // position is the one the tracking reached
+        if (1 - this->stepFraction() < f)
+        {
+            nStuck = 0;
+        }
+        else if (++nStuck > maxStuckFaces)
+        {
+            this->stepFraction() = 1;
+        }
     }
 
     return td.keepParticle;
