@@ -42,6 +42,7 @@ Description
 #include "Enum.H"
 #include "writtenTimes.H"
 #include "runStartCheck.H"
+#include "runProgress.H"
 #include "dictKeys.H"
 #ifdef __GLIBC__
 #include <malloc.h>
@@ -235,8 +236,13 @@ int main(int argc, char *argv[])
     const steadyClock::time_point tLoop = steadyClock::now();
     scalar gasTime = 0, cloudTime = 0;
 
+    // The simulated time done, the pace and the estimated end, in the log
+    // and postProcessing/progress
+    runProgress progress(runTime);
+
     while (runTime.run())
     {
+        progress.start();
         ++runTime;
 
         Info<< "Time = " << runTime.timeName() << nl << endl;
@@ -263,6 +269,7 @@ int main(int argc, char *argv[])
         runTime.write();
 
         runTime.printExecutionTime(Info);
+        progress.update();
     }
 
     const scalar loop = since(tLoop);
