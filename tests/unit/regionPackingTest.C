@@ -950,3 +950,59 @@ TEST(regionPacking, quickInhalerBedPacksForAnySeed)
         EXPECT_LT(seconds, 20) << "seed " << seed;
     }
 }
+
+
+// A blend in % w/w (basis primaryMass: the fractions of all primaries'
+// mass, N counted) is the same blend at N = 1 and N = 10: 2 % w/w of API
+// in a box of carriers gives API primaries of 2 % of the mass whatever N,
+// to the rounding of the parcel counts (one API parcel of N primaries,
+// N v_api/(n_c v_c) of the mass). basis mass (the fractions of parcel
+// masses) at N = 10 gives a blend ten times richer in API than typed:
+// API to carrier mass 10 x 0.02/0.98, so 2 % typed is 0.2/1.18 = 17 % w/w.
+TEST(regionPacking, drugLoadIsTheSameBlendAtAnyN)
+{
+    FatalIOError.throwExceptions();
+
+    const auto apiShare = [](const label N, const std::string& basis)
+    {
+        std::string text(materialsText);
+        text.replace(text.find("N 10;"), 5, "N " + std::to_string(N) + ";");
+        const demMaterials mat(toDict(text));
+        autoPtr<dpiInjectionModel> m = dpiInjectionModel::New
+        (
+            "bed",
+            toDict
+            (
+                bed
+                (
+                    "region { shape box; min (0 0 0); max (1e-3 1e-3 1e-3); }",
+                    "volumeFraction 0.2;",
+                    "basis " + basis + "; fractions { carrier 0.98; api 0.02; }"
+                )
+            ),
+            &mat
+        );
+        DynamicList<injectionSpec> ps;
+        m->inject(0, 1, ps);
+        const scalar nc = countOf(ps, "carrier"), na = countOf(ps, "api");
+        const scalar mc = nc*pow3(70e-6), ma = na*N*pow3(5e-6);
+        std::cout << "  N " << N << ", basis " << basis << ": " << nc
+                  << " carriers, " << na << " API parcels, API "
+                  << 100*ma/(ma + mc) << " % w/w" << std::endl;
+        return std::make_pair(ma/(ma + mc), N*pow3(5e-6)/(ma + mc));
+    };
+
+    for (const label N : {1, 10})
+    {
+        const auto share = apiShare(N, "primaryMass");
+        // the counts' rounding: one API parcel (share.second), and one
+        // carrier of ~1100 moves the share by 0.02/1100 < 1e-4
+        EXPECT_NEAR(share.first, 0.02, share.second + 1e-4) << "N " << N;
+    }
+    const auto one = apiShare(1, "primaryMass"), ten = apiShare(10, "primaryMass");
+    EXPECT_NEAR(one.first, ten.first, one.second + ten.second + 2e-4);
+
+    // The parcel-mass basis at N = 10: 10 x 0.02/0.98 API to carrier mass
+    const auto parcelMass = apiShare(10, "mass");
+    EXPECT_NEAR(parcelMass.first, 0.2/(0.98 + 0.2), 2e-3);
+}

@@ -12,6 +12,7 @@ License
 #include "mathematicalConstants.H"
 #include "addToRunTimeSelectionTable.H"
 #include <algorithm>
+#include <cstdio>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -206,6 +207,8 @@ void Foam::dpiInjectionModels::regionPacking::readFractions
         t.d = mat.diameter(ti);
         t.rho = mat.density(ti);
         t.factor = mat.coarseGraining().factor(ti);
+        t.N = mat.N(ti);
+        t.api = mat.api(ti);
         t.fraction = fd.get<scalar>(names[k]);
         if (!(t.fraction >= 0))
         {
@@ -222,7 +225,7 @@ void Foam::dpiInjectionModels::regionPacking::readFractions
         FatalIOErrorInFunction(fd)
             << "The fractions in dictionary " << fd.name() << " sum to "
             << sum << "; they must sum to 1 (basis "
-            << (massBasis_ ? "mass" : "number") << ")"
+            << dict_.get<word>("basis") << ")"
             << exit(FatalIOError);
     }
 
@@ -230,7 +233,11 @@ void Foam::dpiInjectionModels::regionPacking::readFractions
     scalar norm = 0;
     for (packedType& t : types_)
     {
-        t.x = massBasis_ ? t.fraction/(t.rho*sphereVolume(t.d)) : t.fraction;
+        const scalar parcelMass = t.rho*sphereVolume(t.d);
+        t.x =
+            basis_ == fractionBasis::number ? t.fraction
+          : basis_ == fractionBasis::mass ? t.fraction/parcelMass
+          : t.fraction/(t.N*parcelMass);
         norm += t.x;
     }
     for (packedType& t : types_)
@@ -261,7 +268,7 @@ Foam::dpiInjectionModels::regionPacking::regionPacking
     ),
     region_(packingRegion::New(dict.subDict("region"))),
     types_(),
-    massBasis_(false),
+    basis_(fractionBasis::number),
     volumeFraction_(-1),
     nParticles_(-1),
     seed_(dict.get<label>("seed")),
@@ -286,14 +293,21 @@ Foam::dpiInjectionModels::regionPacking::regionPacking
     const word basis(dict.get<word>("basis"));
     if (basis == "mass")
     {
-        massBasis_ = true;
+        basis_ = fractionBasis::mass;
+    }
+    else if (basis == "primaryMass")
+    {
+        basis_ = fractionBasis::primaryMass;
     }
     else if (basis != "number")
     {
         FatalIOErrorInFunction(dict)
             << "Unknown basis '" << basis << "' for entry 'basis' in "
             << "dictionary " << dict.name() << nl
-            << "Valid choices: (number mass)" << exit(FatalIOError);
+            << "Valid choices: (number mass primaryMass): primaryMass for"
+            << " a blend in % w/w (the fractions of all primaries' mass, N"
+            << " counted), mass for the fractions of parcel masses"
+            << exit(FatalIOError);
     }
 
     readFractions(*materials);
@@ -705,6 +719,39 @@ void Foam::dpiInjectionModels::regionPacking::pack
     Info<< ", " << nObstacles << " obstacles (" << obstacleVolume/V
         << " of the region), seed " << seed_ << ", " << nDraws << " draws, "
         << nShakes << " shakes" << endl;
+
+    // The blend as a formulator reads it: each type's parcels, primaries
+    // (N counted) and mass in mg and % w/w, and the API per carrier. With
+    // basis mass at N > 1 the API's w/w is N times what the fractions say
+    scalar totalMass = 0, apiPrimaries = 0, carriers = 0;
+    forAll(types_, k)
+    {
+        const packedType& t = types_[k];
+        totalMass += n[k]*t.N*t.rho*sphereVolume(t.d);
+        (t.api ? apiPrimaries : carriers) += n[k]*t.N;
+    }
+    Info<< "    regionPacking " << name_ << ": the blend";
+    forAll(types_, k)
+    {
+        const packedType& t = types_[k];
+        const scalar m = n[k]*t.N*t.rho*sphereVolume(t.d);
+        char text[160];
+        std::snprintf
+        (
+            text, sizeof text,
+            "%s %s %ld parcels = %.6g primaries, %.4g mg (%.4g %% w/w)",
+            k ? ";" : ":", t.name.c_str(), long(n[k]), n[k]*t.N, 1e6*m,
+            totalMass > 0 ? 100*m/totalMass : 0.0
+        );
+        Info<< text;
+    }
+    if (carriers > 0)
+    {
+        char text[64];
+        std::snprintf(text, sizeof text, "%.4g", apiPrimaries/carriers);
+        Info<< "; " << text << " API primaries per carrier";
+    }
+    Info<< endl;
 }
 
 
