@@ -186,6 +186,33 @@ void Foam::functionObjects::dpiEmittedDose::writeSizesHeader(Ostream& os)
 }
 
 
+void Foam::functionObjects::dpiEmittedDose::writeStagesHeader(Ostream& os)
+{
+    writeHeader
+    (
+        os,
+        "Emitted dose of cloud " + cloudName_ + " by impactor stage: "
+      + impactor_->describe()
+    );
+    writeHeader
+    (
+        os,
+        "API masses [kg] that left through the outlets, totals since the"
+        " run began, as the impactor's ideal stages sort them by"
+        " aerodynamic diameter (IP+PS: the API on carriers); MMAD [m] and"
+        " GSD of the stages (0: not bracketed)"
+    );
+    writeCommented(os, "Time");
+    for (const word& b : impactor_->names())
+    {
+        writeTabbed(os, b);
+    }
+    writeTabbed(os, "MMAD");
+    writeTabbed(os, "GSD");
+    os  << endl;
+}
+
+
 Foam::label Foam::functionObjects::dpiEmittedDose::sizeClass
 (
     const label n
@@ -245,6 +272,30 @@ void Foam::functionObjects::dpiEmittedDose::readState()
             << " differ from the restarted run's " << before
             << ": sizes.dat counts from this start" << endl;
     }
+
+    // By impactor stage, if the impactor is the restarted run's
+    byStage_ = scalarList(impactor_.valid() ? impactor_->size() : 0, Zero);
+    if (impactor_.valid())
+    {
+        const string was(getProperty<string>("impactor", string()));
+        if (was == impactor_->describe())
+        {
+            dictionary d;
+            getDict("byStage", d);
+            forAll(byStage_, k)
+            {
+                byStage_[k] =
+                    d.lookupOrDefault<scalar>(word("bucket" + Foam::name(k)), 0);
+            }
+        }
+        else if (was.size())
+        {
+            Info<< type() << ' ' << name() << ": the impactor ("
+                << impactor_->describe().c_str() << ") differs from the"
+                << " restarted run's (" << was.c_str() << "): stages.dat"
+                << " counts from this start" << endl;
+        }
+    }
 }
 
 
@@ -280,6 +331,17 @@ void Foam::functionObjects::dpiEmittedDose::writeState()
         bySize.add(word("class" + Foam::name(k)), bySize_[k]);
     }
     setProperty("bySize", bySize);
+
+    if (impactor_.valid())
+    {
+        setProperty("impactor", impactor_->describe());
+        dictionary byStage;
+        forAll(byStage_, k)
+        {
+            byStage.add(word("bucket" + Foam::name(k)), byStage_[k]);
+        }
+        setProperty("byStage", byStage);
+    }
 }
 
 
@@ -302,8 +364,11 @@ Foam::functionObjects::dpiEmittedDose::dpiEmittedDose
     total_(),
     perOutlet_(),
     bySize_(),
+    impactor_(),
+    byStage_(),
     outletsFile_(),
-    sizesFile_()
+    sizesFile_(),
+    stagesFile_()
 {
     read(dict);
 
@@ -314,6 +379,11 @@ Foam::functionObjects::dpiEmittedDose::dpiEmittedDose
         writeOutletsHeader(outletsFile_());
         sizesFile_ = createFile("sizes");
         writeSizesHeader(sizesFile_());
+        if (impactor_.valid())
+        {
+            stagesFile_ = createFile("stages");
+            writeStagesHeader(stagesFile_());
+        }
     }
 }
 
@@ -405,6 +475,13 @@ bool Foam::functionObjects::dpiEmittedDose::read(const dictionary& dict)
         }
     }
 
+    impactor_.reset
+    (
+        dict.found("impactor")
+      ? new impactorStages(dict.subDict("impactor"))
+      : nullptr
+    );
+
     // The totals so far, for the patches and classes now selected: those
     // of the run this one restarts, or of this run before a re-read
     readState();
@@ -425,6 +502,7 @@ bool Foam::functionObjects::dpiEmittedDose::execute()
     dose step;
     List<dose> stepPerOutlet(ids.size());
     scalarList stepBySize(bySize_.size(), Zero);
+    scalarList stepByStage(byStage_.size(), Zero);
     for (const dpiCloudInterface::escapedParcel& e : c.escapedParcels())
     {
         if (!e.api)
@@ -438,7 +516,12 @@ bool Foam::functionObjects::dpiEmittedDose::execute()
             step.elsewhere += m;
             continue;
         }
-        const bool isFine = aerodynamicDiameter(e) < cutOff_;
+        const scalar dae = aerodynamicDiameter(e);
+        const bool isFine = dae < cutOff_;
+        if (impactor_.valid())
+        {
+            stepByStage[impactor_->bucket(dae, e.onCarrier)] += m;
+        }
         step.add(m, e.N, e.onCarrier, e.agglomerateParcels, isFine);
         stepPerOutlet[i].add(m, e.N, e.onCarrier, e.agglomerateParcels, isFine);
         stepBySize
@@ -458,6 +541,7 @@ bool Foam::functionObjects::dpiEmittedDose::execute()
         sums.append(toList(d));
     }
     sums.append(stepBySize);
+    sums.append(stepByStage);
     Pstream::listCombineGather(sums, plusEqOp<scalar>());
     Pstream::listCombineScatter(sums);
     label next = 0;
@@ -474,6 +558,10 @@ bool Foam::functionObjects::dpiEmittedDose::execute()
         addTo(d);
     }
     for (scalar& m : bySize_)
+    {
+        m += sums[next++];
+    }
+    for (scalar& m : byStage_)
     {
         m += sums[next++];
     }
@@ -530,6 +618,19 @@ bool Foam::functionObjects::dpiEmittedDose::execute()
             sos << token::TAB << m;
         }
         sos << endl;
+
+        if (stagesFile_.valid())
+        {
+            scalar mmad, gsd;
+            impactor_->mmadGsd(byStage_, mmad, gsd);
+            OFstream& gos = stagesFile_();
+            writeCurrentTime(gos);
+            for (const scalar m : byStage_)
+            {
+                gos << token::TAB << m;
+            }
+            gos << token::TAB << mmad << token::TAB << gsd << endl;
+        }
     }
 
     Log << type() << ' ' << name() << ": API emitted " << total_.emitted
@@ -557,6 +658,21 @@ bool Foam::functionObjects::dpiEmittedDose::end()
         << total_.agglomerates << ", on carriers " << total_.onCarriers
         << "), fine (d_ae < " << cutOff_ << " m) " << total_.fine
         << " kg" << endl;
+
+    if (impactor_.valid())
+    {
+        scalar mmad, gsd;
+        impactor_->mmadGsd(byStage_, mmad, gsd);
+        const wordList names(impactor_->names());
+        Info<< type() << ' ' << name() << ": "
+            << impactor_->describe().c_str() << nl << "    API [kg]:";
+        forAll(names, k)
+        {
+            Info<< ' ' << names[k] << ' ' << byStage_[k];
+        }
+        Info<< nl << "    MMAD " << mmad << " m, GSD " << gsd
+            << " (of the stages; 0: not bracketed)" << endl;
+    }
     return true;
 }
 
