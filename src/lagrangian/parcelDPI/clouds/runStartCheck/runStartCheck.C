@@ -152,19 +152,33 @@ void Foam::runStartCheck::timeControls(const Time& runTime)
 
 void Foam::runStartCheck::meshDimensions(const polyMesh& mesh)
 {
-    if (mesh.nSolutionD() == 3)
-    {
-        return;
-    }
-
+    // By the patches, not by nSolutionD alone: OpenFOAM counts a wedge
+    // mesh's solution directions as 3 (the wedge's normal is not a
+    // "reduced" direction of polyMesh::solutionD in v1912), and tracking a
+    // parcel across a wedge patch never returns all the same. An empty
+    // or wedge patch with faces is refused whatever nSolutionD says (a
+    // patch of that type with no face anywhere reduces nothing)
     const polyBoundaryMesh& pbm = mesh.boundaryMesh();
     DynamicList<word> reducing;
+    bool wedge = false;
     for (const polyPatch& pp : pbm)
     {
-        if (isA<emptyPolyPatch>(pp) || isA<wedgePolyPatch>(pp))
+        const bool isEmpty = isA<emptyPolyPatch>(pp);
+        const bool isWedge = isA<wedgePolyPatch>(pp);
+        if
+        (
+            (isEmpty || isWedge)
+         && returnReduce(pp.size(), sumOp<label>()) > 0
+        )
         {
             reducing.append(pp.name() + " (" + pp.type() + ")");
+            wedge = wedge || isWedge;
         }
+    }
+
+    if (reducing.empty() && mesh.nSolutionD() == 3)
+    {
+        return;
     }
 
     // The boundary file is a list, not a dictionary: a dictionary named
@@ -172,13 +186,20 @@ void Foam::runStartCheck::meshDimensions(const polyMesh& mesh)
     dictionary context;
     context.name() = pbm.objectPath();
     FatalIOErrorInFunction(context)
-        << "The mesh is " << mesh.nSolutionD() << "-D: patches "
-        << flatOutput(reducing) << " in " << pbm.objectPath() << "." << nl
+        << "The mesh is "
+        << (
+               wedge
+             ? std::string("axisymmetric (wedge)")
+             : std::string(Foam::name(mesh.nSolutionD())) + "-D"
+           ).c_str()
+        << ": patches " << flatOutput(reducing) << " in "
+        << pbm.objectPath() << "." << nl
         << "    dpiFoam needs a 3-D mesh: the DEM moves parcels in 3-D, and"
         << " OpenFOAM's tracking of a parcel that leaves the plane of an"
         << " empty or wedge mesh never returns. Give those patches another"
         << " type (wall, patch or symmetry; in blockMeshDict, then run"
-        << " blockMesh again) and the mesh depth for the parcels"
+        << " blockMesh again) and the mesh depth for the parcels (a full"
+        << " 360-degree mesh for an axisymmetric device)"
         << exit(FatalIOError);
 }
 
