@@ -9,6 +9,10 @@ License
 #include "runStartCheck.H"
 #include "emptyPolyPatch.H"
 #include "wedgePolyPatch.H"
+#include "totalPressureFvPatchScalarField.H"
+#include "Function1.H"
+#include "OStringStream.H"
+#include "IStringStream.H"
 
 // * * * * * * * * * * * * * * * Local Constants  * * * * * * * * * * * * * //
 
@@ -201,6 +205,170 @@ void Foam::runStartCheck::meshDimensions(const polyMesh& mesh)
         << " blockMesh again) and the mesh depth for the parcels (a full"
         << " 360-degree mesh for an axisymmetric device)"
         << exit(FatalIOError);
+}
+
+
+namespace
+{
+
+//- The entries of a patch field as its write() gives them (the stock
+//  conditions keep their Function1s private)
+template<class PatchField>
+Foam::dictionary entries(const PatchField& pf)
+{
+    Foam::OStringStream os;
+    pf.write(os);
+    Foam::IStringStream is(os.str());
+    return Foam::dictionary(is);
+}
+
+//- The least value of f over [t0, t1] and when (1001 samples: a breath
+//  table's phases last far longer than a thousandth of a run)
+std::pair<Foam::scalar, Foam::scalar> least
+(
+    const Foam::Function1<Foam::scalar>& f,
+    const Foam::scalar t0,
+    const Foam::scalar t1
+)
+{
+    std::pair<Foam::scalar, Foam::scalar> m(f.value(t0), t0);
+    const Foam::label n = 1000;
+    for (Foam::label i = 1; i <= n; ++i)
+    {
+        const Foam::scalar t = t0 + (t1 - t0)*i/n;
+        const Foam::scalar v = f.value(t);
+        if (v < m.first)
+        {
+            m = std::make_pair(v, t);
+        }
+    }
+    return m;
+}
+
+} // End anonymous namespace
+
+
+void Foam::runStartCheck::breathInlet
+(
+    const volVectorField& U,
+    const volScalarField& p
+)
+{
+    // A breath set backwards (a negative flow rate, a total pressure below
+    // the outlet's) runs: the gas goes in at the mouthpiece and out at the
+    // inlet. Warned about, not refused: breathing out into the device is
+    // a handling error DPI studies simulate on purpose (the moisture and
+    // powder it blows back), and a rig's breath table may hold an
+    // exhalation before the inhalation. It is said with the patch, the
+    // value and when, since nothing else in the run says so
+    const Time& runTime = U.time();
+    const scalar t0 = runTime.startTime().value();
+    const scalar t1 = max(runTime.endTime().value(), t0);
+
+    // The fixed static pressure the breath is driven against (the outlet's
+    // fixedValue p), for a total-pressure inlet
+    scalar pOut = -GREAT;
+    word outName;
+    forAll(p.boundaryField(), patchi)
+    {
+        const fvPatchScalarField& pp = p.boundaryField()[patchi];
+        if
+        (
+            pp.fixesValue()
+         && pp.type() != "totalPressure"
+         && pp.type() != "uniformTotalPressure"
+         && returnReduce(pp.size(), sumOp<label>()) > 0
+        )
+        {
+            const scalar v = returnReduce
+            (
+                pp.size() ? max(pp) : -GREAT,
+                maxOp<scalar>()
+            );
+            if (v > pOut)
+            {
+                pOut = v;
+                outName = pp.patch().name();
+            }
+        }
+    }
+
+    forAll(U.boundaryField(), patchi)
+    {
+        const fvPatchVectorField& Up = U.boundaryField()[patchi];
+        const fvPatchScalarField& pp = p.boundaryField()[patchi];
+        const word& patchName = Up.patch().name();
+
+        if (Up.type() == "flowRateInletVelocity")
+        {
+            const dictionary d(entries(Up));
+            const word key
+            (
+                d.found("volumetricFlowRate")
+              ? "volumetricFlowRate"
+              : "massFlowRate"
+            );
+            const auto Q(Function1<scalar>::New(key, d));
+            const auto m(least(Q(), t0, t1));
+            if (m.first < 0)
+            {
+                WarningInFunction
+                    << "The breath runs backwards at patch " << patchName
+                    << ": " << U.name() << " flowRateInletVelocity " << key
+                    << " is " << m.first << " at time " << m.second
+                    << " (" << U.objectPath() << "), so the gas flows out"
+                    << " through " << patchName << " (a flow rate > 0 is"
+                    << " into the domain)." << nl
+                    << "    Breathing out into the device may be meant; an"
+                    << " inhalation needs " << key << " > 0 (60 L/min ="
+                    << " 1e-3 m3/s)" << endl;
+            }
+        }
+
+        if (pOut > -GREAT && pp.patch().name() != outName)
+        {
+            scalar p0 = GREAT;
+            scalar when = t0;
+            if (isA<totalPressureFvPatchScalarField>(pp))
+            {
+                const scalarField& f =
+                    refCast<const totalPressureFvPatchScalarField>(pp).p0();
+                p0 = returnReduce
+                (
+                    f.size() ? min(f) : GREAT,
+                    minOp<scalar>()
+                );
+            }
+            else if (pp.type() == "uniformTotalPressure")
+            {
+                const dictionary d(entries(pp));
+                const auto f(Function1<scalar>::New("p0", d));
+                const auto m(least(f(), t0, t1));
+                p0 = m.first;
+                when = m.second;
+            }
+            if (p0 < pOut)
+            {
+                WarningInFunction
+                    << "The breath runs backwards at patch " << patchName
+                    << ": " << p.name() << " " << pp.type() << " p0 "
+                    << p0
+                    << (
+                           pp.type() == "totalPressure"
+                         ? std::string()
+                         : " at time " + std::string(Foam::name(when))
+                       ).c_str()
+                    << " is below the fixed " << p.name() << ' ' << pOut
+                    << " of patch " << outName << " (" << p.objectPath()
+                    << "), so the gas is driven from " << outName << " to "
+                    << patchName << "." << nl
+                    << "    Breathing out into the device may be meant; an"
+                    << " inhalation needs p0 above the outlet's pressure by"
+                    << " the drop over the gas density (4 kPa: 3333.3 more;"
+                    << " dpiFoam's p is kinematic)" << endl;
+            }
+        }
+    }
 }
 
 
