@@ -172,6 +172,11 @@ int main(int argc, char *argv[])
     if (fluid == fluidType::incompressible)
     {
         gas.reset(new incompressibleGas(mesh, g));
+        runStartCheck::breathInlet
+        (
+            gas->Uc(),
+            mesh.lookupObject<volScalarField>("p")
+        );
     }
     else
     {

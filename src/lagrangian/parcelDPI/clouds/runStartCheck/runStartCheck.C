@@ -9,6 +9,10 @@ License
 #include "runStartCheck.H"
 #include "emptyPolyPatch.H"
 #include "wedgePolyPatch.H"
+#include "totalPressureFvPatchScalarField.H"
+#include "Function1.H"
+#include "OStringStream.H"
+#include "IStringStream.H"
 
 // * * * * * * * * * * * * * * * Local Constants  * * * * * * * * * * * * * //
 
@@ -152,19 +156,33 @@ void Foam::runStartCheck::timeControls(const Time& runTime)
 
 void Foam::runStartCheck::meshDimensions(const polyMesh& mesh)
 {
-    if (mesh.nSolutionD() == 3)
-    {
-        return;
-    }
-
+    // By the patches, not by nSolutionD alone: OpenFOAM counts a wedge
+    // mesh's solution directions as 3 (the wedge's normal is not a
+    // "reduced" direction of polyMesh::solutionD in v1912), and tracking a
+    // parcel across a wedge patch never returns all the same. An empty
+    // or wedge patch with faces is refused whatever nSolutionD says (a
+    // patch of that type with no face anywhere reduces nothing)
     const polyBoundaryMesh& pbm = mesh.boundaryMesh();
     DynamicList<word> reducing;
+    bool wedge = false;
     for (const polyPatch& pp : pbm)
     {
-        if (isA<emptyPolyPatch>(pp) || isA<wedgePolyPatch>(pp))
+        const bool isEmpty = isA<emptyPolyPatch>(pp);
+        const bool isWedge = isA<wedgePolyPatch>(pp);
+        if
+        (
+            (isEmpty || isWedge)
+         && returnReduce(pp.size(), sumOp<label>()) > 0
+        )
         {
             reducing.append(pp.name() + " (" + pp.type() + ")");
+            wedge = wedge || isWedge;
         }
+    }
+
+    if (reducing.empty() && mesh.nSolutionD() == 3)
+    {
+        return;
     }
 
     // The boundary file is a list, not a dictionary: a dictionary named
@@ -172,14 +190,185 @@ void Foam::runStartCheck::meshDimensions(const polyMesh& mesh)
     dictionary context;
     context.name() = pbm.objectPath();
     FatalIOErrorInFunction(context)
-        << "The mesh is " << mesh.nSolutionD() << "-D: patches "
-        << flatOutput(reducing) << " in " << pbm.objectPath() << "." << nl
+        << "The mesh is "
+        << (
+               wedge
+             ? std::string("axisymmetric (wedge)")
+             : std::string(Foam::name(mesh.nSolutionD())) + "-D"
+           ).c_str()
+        << ": patches " << flatOutput(reducing) << " in "
+        << pbm.objectPath() << "." << nl
         << "    dpiFoam needs a 3-D mesh: the DEM moves parcels in 3-D, and"
         << " OpenFOAM's tracking of a parcel that leaves the plane of an"
         << " empty or wedge mesh never returns. Give those patches another"
         << " type (wall, patch or symmetry; in blockMeshDict, then run"
-        << " blockMesh again) and the mesh depth for the parcels"
+        << " blockMesh again) and the mesh depth for the parcels (a full"
+        << " 360-degree mesh for an axisymmetric device)"
         << exit(FatalIOError);
+}
+
+
+namespace
+{
+
+//- The entries of a patch field as its write() gives them (the stock
+//  conditions keep their Function1s private)
+template<class PatchField>
+Foam::dictionary entries(const PatchField& pf)
+{
+    Foam::OStringStream os;
+    pf.write(os);
+    Foam::IStringStream is(os.str());
+    return Foam::dictionary(is);
+}
+
+//- The least value of f over [t0, t1] and when (1001 samples: a breath
+//  table's phases last far longer than a thousandth of a run)
+std::pair<Foam::scalar, Foam::scalar> least
+(
+    const Foam::Function1<Foam::scalar>& f,
+    const Foam::scalar t0,
+    const Foam::scalar t1
+)
+{
+    std::pair<Foam::scalar, Foam::scalar> m(f.value(t0), t0);
+    const Foam::label n = 1000;
+    for (Foam::label i = 1; i <= n; ++i)
+    {
+        const Foam::scalar t = t0 + (t1 - t0)*i/n;
+        const Foam::scalar v = f.value(t);
+        if (v < m.first)
+        {
+            m = std::make_pair(v, t);
+        }
+    }
+    return m;
+}
+
+} // End anonymous namespace
+
+
+void Foam::runStartCheck::breathInlet
+(
+    const volVectorField& U,
+    const volScalarField& p
+)
+{
+    // A breath set backwards (a negative flow rate, a total pressure below
+    // the outlet's) runs: the gas goes in at the mouthpiece and out at the
+    // inlet. Warned about, not refused: breathing out into the device is
+    // a handling error DPI studies simulate on purpose (the moisture and
+    // powder it blows back), and a rig's breath table may hold an
+    // exhalation before the inhalation. It is said with the patch, the
+    // value and when, since nothing else in the run says so
+    const Time& runTime = U.time();
+    const scalar t0 = runTime.startTime().value();
+    const scalar t1 = max(runTime.endTime().value(), t0);
+
+    // The fixed static pressure the breath is driven against (the outlet's
+    // fixedValue p), for a total-pressure inlet
+    scalar pOut = -GREAT;
+    word outName;
+    forAll(p.boundaryField(), patchi)
+    {
+        const fvPatchScalarField& pp = p.boundaryField()[patchi];
+        if
+        (
+            pp.fixesValue()
+         && pp.type() != "totalPressure"
+         && pp.type() != "uniformTotalPressure"
+         && returnReduce(pp.size(), sumOp<label>()) > 0
+        )
+        {
+            const scalar v = returnReduce
+            (
+                pp.size() ? max(pp) : -GREAT,
+                maxOp<scalar>()
+            );
+            if (v > pOut)
+            {
+                pOut = v;
+                outName = pp.patch().name();
+            }
+        }
+    }
+
+    forAll(U.boundaryField(), patchi)
+    {
+        const fvPatchVectorField& Up = U.boundaryField()[patchi];
+        const fvPatchScalarField& pp = p.boundaryField()[patchi];
+        const word& patchName = Up.patch().name();
+
+        if (Up.type() == "flowRateInletVelocity")
+        {
+            const dictionary d(entries(Up));
+            const word key
+            (
+                d.found("volumetricFlowRate")
+              ? "volumetricFlowRate"
+              : "massFlowRate"
+            );
+            const auto Q(Function1<scalar>::New(key, d));
+            const auto m(least(Q(), t0, t1));
+            if (m.first < 0)
+            {
+                WarningInFunction
+                    << "The breath runs backwards at patch " << patchName
+                    << ": " << U.name() << " flowRateInletVelocity " << key
+                    << " is " << m.first << " at time " << m.second
+                    << " (" << U.objectPath() << "), so the gas flows out"
+                    << " through " << patchName << " (a flow rate > 0 is"
+                    << " into the domain)." << nl
+                    << "    Breathing out into the device may be meant; an"
+                    << " inhalation needs " << key << " > 0 (60 L/min ="
+                    << " 1e-3 m3/s)" << endl;
+            }
+        }
+
+        if (pOut > -GREAT && pp.patch().name() != outName)
+        {
+            scalar p0 = GREAT;
+            scalar when = t0;
+            if (isA<totalPressureFvPatchScalarField>(pp))
+            {
+                const scalarField& f =
+                    refCast<const totalPressureFvPatchScalarField>(pp).p0();
+                p0 = returnReduce
+                (
+                    f.size() ? min(f) : GREAT,
+                    minOp<scalar>()
+                );
+            }
+            else if (pp.type() == "uniformTotalPressure")
+            {
+                const dictionary d(entries(pp));
+                const auto f(Function1<scalar>::New("p0", d));
+                const auto m(least(f(), t0, t1));
+                p0 = m.first;
+                when = m.second;
+            }
+            if (p0 < pOut)
+            {
+                WarningInFunction
+                    << "The breath runs backwards at patch " << patchName
+                    << ": " << p.name() << " " << pp.type() << " p0 "
+                    << p0
+                    << (
+                           pp.type() == "totalPressure"
+                         ? std::string()
+                         : " at time " + std::string(Foam::name(when))
+                       ).c_str()
+                    << " is below the fixed " << p.name() << ' ' << pOut
+                    << " of patch " << outName << " (" << p.objectPath()
+                    << "), so the gas is driven from " << outName << " to "
+                    << patchName << "." << nl
+                    << "    Breathing out into the device may be meant; an"
+                    << " inhalation needs p0 above the outlet's pressure by"
+                    << " the drop over the gas density (4 kPa: 3333.3 more;"
+                    << " dpiFoam's p is kinematic)" << endl;
+            }
+        }
+    }
 }
 
 

@@ -102,6 +102,39 @@ Foam::scalar Foam::demEngine::readSkin(const dictionary& dict) const
 }
 
 
+void Foam::demEngine::checkDiameters
+(
+    const dictionary& dict,
+    const polyMesh& mesh
+) const
+{
+    // A parcel lives in the mesh's cells: a type's diameter above the
+    // mesh's smallest extent cannot be placed anywhere, and is a typing
+    // error (a diameter in um for m, 1e300). Said for what it is, before
+    // the skin, the time step check and the neighbour search take it in
+    // (was: "The neighbour-search skin must be > 0")
+    const boundBox meshBb(mesh.points(), true);
+    const scalar extent = cmptMin(meshBb.span());
+    const dictionary& types = dict.subDict("types");
+    forAll(materials_.names(), t)
+    {
+        const scalar d = materials_.diameter(t);
+        if (materials_.isParticleType(t) && !(d < extent))
+        {
+            const word& name = materials_.names()[t];
+            FatalIOErrorInFunction(types.subDict(name))
+                << "Entry 'diameter' = " << d << " in dictionary "
+                << types.subDict(name).name() << " is larger than the mesh"
+                << " (bounds " << meshBb.min() << ' ' << meshBb.max()
+                << ", " << extent << " m across at its narrowest): a"
+                << " parcel of type " << name << " fits nowhere in it." << nl
+                << "    Diameters are in metres (5e-6 for 5 um), as the"
+                << " mesh" << exit(FatalIOError);
+        }
+    }
+}
+
+
 void Foam::demEngine::flushHistory()
 {
     if (!history_.workingValid())
@@ -280,6 +313,11 @@ Foam::demEngine::demEngine(const dictionary& dict, const polyMesh* mesh)
         FatalIOErrorInFunction(dict)
             << "Entry 'timeStep' = " << timeStep_ << " in dictionary "
             << dict.name() << " must be > 0" << exit(FatalIOError);
+    }
+
+    if (mesh)
+    {
+        checkDiameters(dict, *mesh);
     }
 
     Info<< "DEM engine: " << materials_.size() << " types "

@@ -12,6 +12,8 @@ License
 #include "mathematicalConstants.H"
 #include "HashSet.H"
 
+#include <limits>
+
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
 namespace
@@ -69,12 +71,32 @@ const Foam::wordList Foam::demMaterials::pairKeys
 
 void Foam::demMaterials::readType(const label typei, const dictionary& d)
 {
-    auto positive = [](const scalar x) { return x > 0; };
+    // Finite too: a value beyond the double range is read as inf, and
+    // 1e300 overflows every volume and mass made of it
+    auto positive = [](const scalar x)
+    {
+        return x > 0 && x < std::numeric_limits<scalar>::max();
+    };
 
     if (d.found("diameter"))
     {
-        diameter_[typei] = readInRange(d, "diameter", positive, "> 0");
-        density_[typei] = readInRange(d, "density", positive, "> 0");
+        diameter_[typei] =
+            readInRange(d, "diameter", positive, "finite and > 0");
+        // (compared without cubing: the overflow itself traps, sigFpe)
+        if (!(diameter_[typei] < Foam::cbrt(VGREAT)))
+        {
+            // Its volume, mass and every sum over it overflow (was:
+            // "The neighbour-search skin must be > 0", the smallest
+            // diameter taken for none). The mesh check (demEngine) refuses
+            // any diameter larger than the mesh
+            FatalIOErrorInFunction(d)
+                << "Entry 'diameter' = " << diameter_[typei]
+                << " in dictionary " << d.name() << " is out of range: a"
+                << " particle's volume overflows (diameters are in metres:"
+                << " 5e-6 for 5 um)" << exit(FatalIOError);
+        }
+        density_[typei] =
+            readInRange(d, "density", positive, "finite and > 0");
     }
     else
     {
@@ -85,7 +107,7 @@ void Foam::demMaterials::readType(const label typei, const dictionary& d)
     }
 
     youngsModulus_[typei] =
-        readInRange(d, "youngsModulus", positive, "> 0");
+        readInRange(d, "youngsModulus", positive, "finite and > 0");
 
     poissonsRatio_[typei] = readInRange
     (
@@ -364,15 +386,19 @@ Foam::scalar Foam::demMaterials::maxDiameter() const
 
 Foam::scalar Foam::demMaterials::minDiameter() const
 {
-    scalar d = GREAT;
+    // No sentinel value: any diameter the types hold is a candidate (was
+    // GREAT, so a type of diameter above 1e15 m counted as none)
+    bool any = false;
+    scalar d = 0;
     forAll(diameter_, i)
     {
         if (isParticleType(i))
         {
-            d = min(d, diameter_[i]);
+            d = any ? min(d, diameter_[i]) : diameter_[i];
+            any = true;
         }
     }
-    return d < GREAT ? d : 0;
+    return d;
 }
 
 

@@ -327,10 +327,53 @@ void Foam::DPICloud<CloudType>::recordLostParcel
 )
 {
     escapes_.lost(pp.index());
-    WarningInFunction
-        << "Parcel " << p.globalId() << " passed through wall patch "
-        << pp.name() << " (DEM position " << p.xDEM()
-        << "); removed. Is the patch listed in dem/walls?" << endl;
+
+    // Which DEM wall, if any, lies where the parcel crossed the patch (its
+    // mesh position, on the face): a patch wall listed in dem/walls, or an
+    // STL wall over it. With one there the patch is a DEM wall, and the
+    // parcel's centre got on or past it: a wall pushes a sphere away from
+    // the side its centre is on, so a centre on the wall (a start position
+    // there, a start overlap let through by dem/startOverlap/refuse) or
+    // carried past it in one step is pushed out, and OpenFOAM's tracking
+    // loses it. Only with none is "list the patch" the advice (was said
+    // in both cases)
+    word wallName;
+    if (models_.valid())
+    {
+        DynamicList<demWallContact> contacts;
+        for (const demWall& w : engine().walls())
+        {
+            contacts.clear();
+            w.findContacts(p.position(), 0.5*p.d(), contacts);
+            if (contacts.size())
+            {
+                wallName = w.name();
+                break;
+            }
+        }
+    }
+
+    if (wallName.size())
+    {
+        WarningInFunction
+            << "Parcel " << p.globalId() << " crossed wall patch "
+            << pp.name() << ", DEM wall " << wallName << " (DEM position "
+            << p.xDEM() << "): its centre got on or beyond the wall, and a"
+            << " wall pushes a parcel to the side its centre is on, here out"
+            << " of the mesh; removed." << nl
+            << "    Start parcels with their centres inside the device"
+            << " (dem/startOverlap/refuse lets overlaps through, not"
+            << " centres on a wall), and keep the DEM step below the time"
+            << " a parcel takes to cross its radius" << endl;
+    }
+    else
+    {
+        WarningInFunction
+            << "Parcel " << p.globalId() << " passed through wall patch "
+            << pp.name() << " (DEM position " << p.xDEM() << "), where no"
+            << " DEM wall lies; removed. List the patch in dem/walls (type"
+            << " patch), or cover it with a surface wall" << endl;
+    }
 }
 
 

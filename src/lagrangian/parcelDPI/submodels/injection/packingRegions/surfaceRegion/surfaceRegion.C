@@ -30,11 +30,110 @@ Foam::triSurface Foam::packingRegions::surfaceRegion::read
 )
 {
     checked(dict, {"file", "scale"});
-    return caseSurface::read
+    const triSurface surf
     (
-        dict,
-        "Region of dictionary " + dict.name() + " (shape surface)"
+        caseSurface::read
+        (
+            dict,
+            "Region of dictionary " + dict.name() + " (shape surface)"
+        )
     );
+
+    // The inside test needs a closed surface: every edge on two triangles
+    label nOpen = 0;
+    for (const labelList& edgeFaces : surf.edgeFaces())
+    {
+        if (edgeFaces.size() != 2)
+        {
+            ++nOpen;
+        }
+    }
+    const scalar volume = signedVolume(surf);
+    if (surf.empty() || nOpen || !(mag(volume) > 0))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Region of dictionary " << dict.name() << " (shape surface):"
+            << " the surface holds " << surf.size() << " triangles, "
+            << nOpen << " edges not shared by exactly two of them, and"
+            << " encloses " << mag(volume) << " m^3: a region must be a"
+            << " closed surface" << exit(FatalIOError);
+    }
+
+    // The inside test (triSurfaceSearch) goes by the nearest triangle's
+    // normal: neighbours that face opposite ways make it answer "inside"
+    // and "outside" by patches, and the region packs where it should not
+    // (or "does not fit"). Each edge of a consistently oriented surface
+    // runs one way in one of its triangles and the other way in the other
+    const edgeList& edges = surf.edges();
+    const labelListList& edgeFaces = surf.edgeFaces();
+    const List<labelledTri>& faces = surf.localFaces();
+    label nMixed = 0;
+    boundBox mixedBb;
+    forAll(edges, edgei)
+    {
+        const labelList& ef = edgeFaces[edgei];
+        if
+        (
+            faces[ef[0]].edgeDirection(edges[edgei])
+         == faces[ef[1]].edgeDirection(edges[edgei])
+        )
+        {
+            ++nMixed;
+            mixedBb.add(surf.localPoints()[edges[edgei].start()]);
+            mixedBb.add(surf.localPoints()[edges[edgei].end()]);
+        }
+    }
+    if (nMixed)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Region of dictionary " << dict.name() << " (shape surface):"
+            << " the triangles of " << caseSurface::path(dict) << " face"
+            << " opposite ways across " << nMixed << " of its "
+            << edges.size() << " edges (within " << mixedBb.min() << ' '
+            << mixedBb.max() << "): the inside of the surface is not"
+            << " defined." << nl
+            << "    Orient its normals one way, outwards: e.g. surfaceOrient"
+            << " <file> '(x y z)' <new file>, with (x y z) a point outside"
+            << " the region" << exit(FatalIOError);
+    }
+
+    // Consistent but facing inwards (the signed volume < 0: an STL written
+    // inside out, or a cavity's surface taken from the device's walls):
+    // the enclosed space is still the region meant, so its triangles are
+    // turned to face out and the run says so (was: "does not fit", every
+    // point of the bed being "outside")
+    if (volume < 0)
+    {
+        Info<< "    Region of dictionary " << dict.name() << ": the normals"
+            << " of " << caseSurface::path(dict) << " point inwards (the"
+            << " surface is inside out); packing the space it encloses,"
+            << " with its triangles turned to face out" << endl;
+
+        List<labelledTri> flipped(surf);
+        for (labelledTri& t : flipped)
+        {
+            std::swap(t[1], t[2]);
+        }
+        return triSurface(flipped, surf.patches(), surf.points());
+    }
+
+    return surf;
+}
+
+
+Foam::scalar Foam::packingRegions::surfaceRegion::signedVolume
+(
+    const triSurface& surf
+)
+{
+    // The divergence theorem over the triangles: > 0 when they face out
+    const pointField& pts = surf.points();
+    scalar v = 0;
+    for (const labelledTri& t : surf)
+    {
+        v += (pts[t[0]] & (pts[t[1]] ^ pts[t[2]]))/6;
+    }
+    return v;
 }
 
 
@@ -115,33 +214,9 @@ Foam::packingRegions::surfaceRegion::surfaceRegion(const dictionary& dict)
     bounds_(surface_.points(), false),
     inscribed_(0)
 {
-    // The enclosed volume, by the divergence theorem over the triangles
-    // (whichever way they face)
-    const pointField& pts = surface_.points();
-    for (const labelledTri& t : surface_)
-    {
-        volume_ += (pts[t[0]] & (pts[t[1]] ^ pts[t[2]]))/6;
-    }
-    volume_ = mag(volume_);
-
-    // The inside test needs a closed surface: every edge on two triangles
-    label nOpen = 0;
-    for (const labelList& edgeFaces : surface_.edgeFaces())
-    {
-        if (edgeFaces.size() != 2)
-        {
-            ++nOpen;
-        }
-    }
-    if (surface_.empty() || nOpen || !(volume_ > 0))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Region of dictionary " << dict.name() << " (shape surface):"
-            << " the surface holds " << surface_.size() << " triangles, "
-            << nOpen << " edges not shared by exactly two of them, and"
-            << " encloses " << volume_ << " m^3: a region must be a closed"
-            << " surface" << exit(FatalIOError);
-    }
+    // The enclosed volume (read() has checked the surface closed and
+    // turned it to face out)
+    volume_ = signedVolume(surface_);
 
     search_.reset(new triSurfaceSearch(surface_));
     inscribed_ = largestDepth();
