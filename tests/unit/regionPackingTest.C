@@ -1006,3 +1006,58 @@ TEST(regionPacking, drugLoadIsTheSameBlendAtAnyN)
     const auto parcelMass = apiShare(10, "mass");
     EXPECT_NEAR(parcelMass.first, 0.2/(0.98 + 0.2), 2e-3);
 }
+
+
+// A fill given by its mass (fillMass, the primaries' mass, N counted): the
+// packed primaries weigh the fill at N = 1 and N = 10, to the rounding of
+// the parcel count (half a mean parcel: the counts sum to round(M/m_mean))
+// and of the per-type counts (within one parcel of each type)
+TEST(regionPacking, fillMassIsTheSameFillAtAnyN)
+{
+    FatalIOError.throwExceptions();
+
+    const scalar fill = 2e-7;      // 0.2 mg: ~720 carriers of 70 um
+    for (const label N : {1, 10})
+    {
+        std::string text(materialsText);
+        text.replace(text.find("N 10;"), 5, "N " + std::to_string(N) + ";");
+        const demMaterials mat(toDict(text));
+        autoPtr<dpiInjectionModel> m = dpiInjectionModel::New
+        (
+            "bed",
+            toDict
+            (
+                bed
+                (
+                    "region { shape box; min (0 0 0); max (1e-3 1e-3 1e-3); }",
+                    "fillMass 2e-7;",
+                    "basis primaryMass; fractions { carrier 0.98; api 0.02; }"
+                )
+            ),
+            &mat
+        );
+        DynamicList<injectionSpec> ps;
+        m->inject(0, 1, ps);
+        using constant::mathematical::pi;
+        const scalar mc = 1520*pi/6*pow3(70e-6), ma = N*1520*pi/6*pow3(5e-6);
+        const scalar nc = countOf(ps, "carrier"), na = countOf(ps, "api");
+        const scalar mass = nc*mc + na*ma;
+        std::cout << "  fillMass 2e-7 kg at N " << N << ": " << nc
+                  << " carriers, " << na << " API parcels, " << mass
+                  << " kg, API " << 100*na*ma/mass << " % w/w" << std::endl;
+        EXPECT_NEAR(mass, fill, mc + ma) << "N " << N;
+        EXPECT_NEAR(na*ma/mass, 0.02, ma/mass + mc/mass*0.02 + 1e-4) << "N " << N;
+    }
+
+    // Exactly one amount
+    const std::string region
+    (
+        "region { shape box; min (0 0 0); max (1e-3 1e-3 1e-3); }"
+    );
+    const std::string fractions
+    (
+        "basis primaryMass; fractions { carrier 0.98; api 0.02; }"
+    );
+    EXPECT_THROW(packed(bed(region, "fillMass 2e-9; nParticles 10;", fractions)), Foam::error);
+    EXPECT_THROW(packed(bed(region, "fillMass -1;", fractions)), Foam::error);
+}

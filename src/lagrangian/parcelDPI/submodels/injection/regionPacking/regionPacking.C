@@ -13,6 +13,7 @@ License
 #include "addToRunTimeSelectionTable.H"
 #include <algorithm>
 #include <cstdio>
+#include <cmath>
 #include <cstdint>
 #include <unordered_map>
 #include <vector>
@@ -263,7 +264,7 @@ Foam::dpiInjectionModels::regionPacking::regionPacking
         {
             "region", "fractions", "basis", "volumeFraction", "nParticles",
             "seed", "U", "omega", "exclude", "avoidInjected",
-            "countObstacles", "maxAttempts", "maxShakes"
+            "countObstacles", "maxAttempts", "maxShakes", "fillMass"
         }
     ),
     region_(packingRegion::New(dict.subDict("region"))),
@@ -271,6 +272,7 @@ Foam::dpiInjectionModels::regionPacking::regionPacking
     basis_(fractionBasis::number),
     volumeFraction_(-1),
     nParticles_(-1),
+    fillMass_(-1),
     seed_(dict.get<label>("seed")),
     U_(dict.getOrDefault<vector>("U", Zero)),
     omega_(dict.getOrDefault<vector>("omega", Zero)),
@@ -327,11 +329,13 @@ Foam::dpiInjectionModels::regionPacking::regionPacking
 
     const bool hasFraction = dict.found("volumeFraction");
     const bool hasNumber = dict.found("nParticles");
-    if (hasFraction == hasNumber)
+    const bool hasMass = dict.found("fillMass");
+    if (hasFraction + hasNumber + hasMass != 1)
     {
         FatalIOErrorInFunction(dict)
             << "Injector " << name << " needs exactly one of the entries "
-            << "'volumeFraction' and 'nParticles' in dictionary "
+            << "'volumeFraction', 'nParticles' and 'fillMass' (the fill's"
+            << " primary mass [kg], N counted) in dictionary "
             << dict.name() << exit(FatalIOError);
     }
     if (hasFraction)
@@ -346,6 +350,17 @@ Foam::dpiInjectionModels::regionPacking::regionPacking
                 << " (the densest packing of equal spheres; random "
                 << "sequential packing reaches about 0.38)"
                 << exit(FatalIOError);
+        }
+    }
+    else if (hasMass)
+    {
+        fillMass_ = dict.get<scalar>("fillMass");
+        if (!(fillMass_ > 0) || !std::isfinite(fillMass_))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Entry 'fillMass' = " << fillMass_ << " in dictionary "
+                << dict.name() << " must be > 0 [kg] (a 10 mg fill is"
+                << " 1e-5)" << exit(FatalIOError);
         }
     }
     else
@@ -419,7 +434,25 @@ Foam::labelList Foam::dpiInjectionModels::regionPacking::counts
 {
     label N = nParticles_;
 
-    if (N < 0)
+    if (fillMass_ > 0)
+    {
+        // The mean primary mass a parcel carries, N counted
+        scalar mMean = 0;
+        for (const packedType& t : types_)
+        {
+            mMean += t.x*t.N*t.rho*sphereVolume(t.d);
+        }
+        const scalar n = fillMass_/mMean;
+        if (!(n < labelMax))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Injector " << name_ << ": fillMass " << fillMass_
+                << " kg is " << n << " parcels, more than can be counted;"
+                << " is it in kg?" << exit(FatalIOError);
+        }
+        N = label(std::round(n));
+    }
+    else if (N < 0)
     {
         const scalar target =
             volumeFraction_*region_->volume()
@@ -689,7 +722,7 @@ void Foam::dpiInjectionModels::regionPacking::pack
                     << "    Reached solid fraction "
                     << (placedVolume + (countObstacles_ ? obstacleVolume : 0))/V
                     << " of the " << region_->shapeName() << " (target "
-                    << (volumeFraction_ > 0 ? "volumeFraction " : "nParticles ")
+                    << (volumeFraction_ > 0 ? "volumeFraction " : "parcels ")
                     << (volumeFraction_ > 0 ? volumeFraction_ : scalar(nTotal))
                     << ", obstacles " << obstacleVolume/V << ")." << nl
                     << "    Shaken random packing of equal spheres reaches"
