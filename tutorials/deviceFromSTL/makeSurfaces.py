@@ -16,10 +16,17 @@ CAD program would export them (one file per part, in metres):
     makeSurfaces.py [CASE]      (default: the current directory)
 
 The device is the case's own: change the numbers below and run Allrun.
-Its faces lie on the background mesh's cell faces (0.5 mm, 0.25 mm at the
-grid), so the cut mesh is the surfaces exactly and the DEM walls, read from
-these files, are where the gas sees its walls.
+It is drawn in its design frame (x along the floor leg, z up) and written,
+as a CAD program exports a part in a frame of its own, turned by 25
+degrees about the oblique axis (1, 1, 1): no face of it is parallel to the
+background mesh's cells, so snappyHexMesh snaps every wall to the surface
+and to its feature edges (surfaceFeatureExtract), as with a real CAD
+export. Gravity, the lab's down, is the design frame's -z turned the same
+way (constant/g); the bed region, bed.stl, turns with the device. The
+numbers the case's dictionaries take from this turn (the background box,
+locationInMesh, g) are printed at the end (log.makeSurfaces).
 """
+import math
 import os
 import sys
 
@@ -30,6 +37,30 @@ H = 16.0        # height of the inlet (z)
 GRID_X = (24.0, 25.0)
 GRID_Z = ((1.0, 1.75), (2.5, 3.25), (4.0, 4.75))
 BED = ((2.7, -0.3, 0.0), (3.3, 0.3, 0.2))
+# The CAD frame: the design frame turned by ANGLE degrees about AXIS
+AXIS = (1.0, 1.0, 1.0)
+ANGLE = 25.0
+INSIDE = (3.1, 0.12, 3.1)   # a point in the duct (design frame, mm)
+
+
+def rotation(axis, angle):
+    """The rotation matrix of angle [degrees] about axis (Rodrigues)."""
+    n = sum(c*c for c in axis)**0.5
+    k = [c/n for c in axis]
+    c, s = math.cos(math.radians(angle)), math.sin(math.radians(angle))
+    K = [[0, -k[2], k[1]], [k[2], 0, -k[0]], [-k[1], k[0], 0]]
+    KK = [[sum(K[i][m]*K[m][j] for m in range(3)) for j in range(3)]
+          for i in range(3)]
+    return [[(i == j) + s*K[i][j] + (1 - c)*KK[i][j] for j in range(3)]
+            for i in range(3)]
+
+
+ROT = rotation(AXIS, ANGLE)
+
+
+def turn(v):
+    """A design-frame point in the CAD frame."""
+    return tuple(sum(ROT[i][j]*v[j] for j in range(3)) for i in range(3))
 
 
 def quad(a, b, c, d):
@@ -79,10 +110,13 @@ def duct():
 
 
 def write(path, name, tris):
+    """An ASCII STL in metres, in the CAD frame; returns its points [mm]."""
+    pts = []
     with open(path, "w") as f:
         f.write("solid %s\n" % name)
         for t in tris:
-            p = [[c*MM for c in v] for v in t]
+            p = [[c*MM for c in turn(v)] for v in t]
+            pts += [turn(v) for v in t]
             u = [p[1][i] - p[0][i] for i in range(3)]
             w = [p[2][i] - p[0][i] for i in range(3)]
             n = [u[1]*w[2] - u[2]*w[1], u[2]*w[0] - u[0]*w[2],
@@ -94,13 +128,14 @@ def write(path, name, tris):
                 f.write("   vertex %.9g %.9g %.9g\n" % tuple(v))
             f.write("  endloop\n endfacet\n")
         f.write("endsolid %s\n" % name)
+    return pts
 
 
 case = sys.argv[1] if len(sys.argv) > 1 else "."
 out = os.path.join(case, "constant", "triSurface")
 os.makedirs(out, exist_ok=True)
 y0, y1 = -W/2, W/2
-write(os.path.join(out, "walls.stl"), "walls", duct())
+pts = write(os.path.join(out, "walls.stl"), "walls", duct())
 write(os.path.join(out, "inlet.stl"), "inlet",
       quad((0, y0, H), (W, y0, H), (W, y1, H), (0, y1, H)))
 write(os.path.join(out, "outlet.stl"), "outlet",
@@ -111,3 +146,11 @@ for z0, z1 in GRID_Z:
 write(os.path.join(out, "grid.stl"), "grid", bars)
 write(os.path.join(out, "bed.stl"), "bed", box(*BED))
 print("makeSurfaces: walls, inlet, outlet, grid, bed in %s" % out)
+print("makeSurfaces: turned by %g degrees about (%g %g %g)" % ((ANGLE,) + AXIS))
+lo = [min(p[i] for p in pts) for i in range(3)]
+hi = [max(p[i] for p in pts) for i in range(3)]
+print("makeSurfaces: the walls' bounding box (%.3f %.3f %.3f) (%.3f %.3f %.3f) mm"
+      % tuple(lo + hi))
+print("makeSurfaces: locationInMesh (%.4e %.4e %.4e)"
+      % tuple(c*MM for c in turn(INSIDE)))
+print("makeSurfaces: g (%.6g %.6g %.6g)" % turn((0, 0, -9.81)))
