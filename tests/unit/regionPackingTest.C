@@ -312,6 +312,37 @@ std::string bed
         + region + " " + amount + " " + fractions + " U (0 0 -1); " + extra;
 }
 
+// Pack a 1 mm box of carriers and API with the materials above but the
+// API's N set to N (the blend's tests compare N = 1 with N = 10)
+List<injectionSpec> packedAtN
+(
+    const label N,
+    const std::string& amount,
+    const std::string& fractions
+)
+{
+    std::string text(materialsText);
+    text.replace(text.find("N 10;"), 5, "N " + std::to_string(N) + ";");
+    const demMaterials mat(toDict(text));
+    autoPtr<dpiInjectionModel> m = dpiInjectionModel::New
+    (
+        "bed",
+        toDict
+        (
+            bed
+            (
+                "region { shape box; min (0 0 0); max (1e-3 1e-3 1e-3); }",
+                amount,
+                fractions
+            )
+        ),
+        &mat
+    );
+    DynamicList<injectionSpec> ps;
+    m->inject(0, 1, ps);
+    return List<injectionSpec>(std::move(ps));
+}
+
 } // End anonymous namespace
 
 
@@ -965,25 +996,14 @@ TEST(regionPacking, drugLoadIsTheSameBlendAtAnyN)
 
     const auto apiShare = [](const label N, const std::string& basis)
     {
-        std::string text(materialsText);
-        text.replace(text.find("N 10;"), 5, "N " + std::to_string(N) + ";");
-        const demMaterials mat(toDict(text));
-        autoPtr<dpiInjectionModel> m = dpiInjectionModel::New
+        const List<injectionSpec> ps
         (
-            "bed",
-            toDict
+            packedAtN
             (
-                bed
-                (
-                    "region { shape box; min (0 0 0); max (1e-3 1e-3 1e-3); }",
-                    "volumeFraction 0.2;",
-                    "basis " + basis + "; fractions { carrier 0.98; api 0.02; }"
-                )
-            ),
-            &mat
+                N, "volumeFraction 0.2;",
+                "basis " + basis + "; fractions { carrier 0.98; api 0.02; }"
+            )
         );
-        DynamicList<injectionSpec> ps;
-        m->inject(0, 1, ps);
         const scalar nc = countOf(ps, "carrier"), na = countOf(ps, "api");
         const scalar mc = nc*pow3(70e-6), ma = na*N*pow3(5e-6);
         std::cout << "  N " << N << ", basis " << basis << ": " << nc
@@ -1019,25 +1039,14 @@ TEST(regionPacking, fillMassIsTheSameFillAtAnyN)
     const scalar fill = 2e-7;      // 0.2 mg: ~720 carriers of 70 um
     for (const label N : {1, 10})
     {
-        std::string text(materialsText);
-        text.replace(text.find("N 10;"), 5, "N " + std::to_string(N) + ";");
-        const demMaterials mat(toDict(text));
-        autoPtr<dpiInjectionModel> m = dpiInjectionModel::New
+        const List<injectionSpec> ps
         (
-            "bed",
-            toDict
+            packedAtN
             (
-                bed
-                (
-                    "region { shape box; min (0 0 0); max (1e-3 1e-3 1e-3); }",
-                    "fillMass 2e-7;",
-                    "basis primaryMass; fractions { carrier 0.98; api 0.02; }"
-                )
-            ),
-            &mat
+                N, "fillMass 2e-7;",
+                "basis primaryMass; fractions { carrier 0.98; api 0.02; }"
+            )
         );
-        DynamicList<injectionSpec> ps;
-        m->inject(0, 1, ps);
         using constant::mathematical::pi;
         const scalar mc = 1520*pi/6*pow3(70e-6), ma = N*1520*pi/6*pow3(5e-6);
         const scalar nc = countOf(ps, "carrier"), na = countOf(ps, "api");
