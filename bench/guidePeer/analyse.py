@@ -281,8 +281,17 @@ def main():
         if len(dd) > 1:
             L.append("| %d | %d | %+.3f +- %.3f | %.3f |" % (
                 N, len(dd), dd.mean(), dd.std(ddof=1)/np.sqrt(len(dd)), dd.std(ddof=1)))
+    # the inhaler's stage 1 (runInhalerStage1's table), kept when these cases are re-run
+    inh = os.path.join(here, "inhalerStage1.md")
+    if os.path.isfile(inh):
+        L.append("\n" + INHALER_HEADER + "\n")
+        L.append(open(inh).read().rstrip("\n"))
     open(os.path.join(here, "results.md"), "w").write("\n".join(L) + "\n")
     print("\n".join(L))
+
+
+INHALER_HEADER = ("## The inhaler's stage 1 (quick size, 50 ms; runInhalerStage1, "
+                  "its own run's date in README.md)")
 
 
 if __name__ == "__main__":
