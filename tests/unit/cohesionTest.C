@@ -22,6 +22,7 @@ Description
 #include <gtest/gtest.h>
 #include "demEngine.H"
 #include "guideParticles.H"
+#include "guideDecks.H"
 #include "vdwGuParcel.H"
 #include "IStringStream.H"
 #include "mathematicalConstants.H"
@@ -36,33 +37,8 @@ namespace
 
 using namespace guideParticles;
 
-dictionary toDict(const std::string& text)
-{
-    IStringStream is(text);
-    return dictionary(is);
-}
-
-// The guide's cohesion block (theory 3.2) with a given A_R and extra
-// entries/keys spliced in
-std::string cohesionBlock
-(
-    const scalar A,
-    const std::string& extraPairs = "",
-    const std::string& chi = "3.177672",
-    const std::string& extraKeys = ""
-)
-{
-    std::ostringstream os;
-    os.precision(17);
-    os  << "vdwGuParcelCoeffs { chi " << chi << "; " << extraKeys
-        << " pairs {"
-        << " default { hamakerConstant " << A << "; sMin 1e-9;"
-        << " sMins 6.227e-9; s0 4.445e-9; }"
-        << " carrier-carrier { sMins 6.276e-9; s0 4.494e-9; }"
-        << " api-api { sMins 6.077e-9; s0 4.295e-9; }"
-        << extraPairs << " } }\n";
-    return os.str();
-}
+using guideDecks::toDict;
+using guideDecks::cohesionBlock;
 
 // Engine deck: carrier and API (coarsening N), optional floor z = 0
 std::string deck

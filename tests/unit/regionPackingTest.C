@@ -77,7 +77,7 @@ const demMaterials& materials()
 scalar diameterOf(const word& type)
 {
     const demMaterials& mat = materials();
-    return mat.diameter(mat.names().find(type));
+    return mat.size(mat.names().find(type)).minDiameter();
 }
 
 scalar volumeOf(const word& type)

@@ -93,7 +93,15 @@ void Foam::restartCheck::writeTypes
         }
         dictionary row;
         row.add("N", mat.N(t));
-        row.add("diameter", mat.diameter(t));
+        // One size, or the distribution the parcels were drawn from
+        if (mat.size(t).fixed())
+        {
+            row.add("diameter", mat.size(t).minDiameter());
+        }
+        else
+        {
+            row.add("sizeDistribution", mat.size(t).description());
+        }
         row.add("density", mat.density(t));
         row.add("parcels", count[t]);
         if (count[t])
@@ -182,13 +190,42 @@ Foam::labelList Foam::restartCheck::mapTypes
         const dictionary& row = *rowPtr;
         const label n = newIndex[t];
         const scalar Nw = row.get<scalar>("N");
-        const scalar dw = row.get<scalar>("diameter");
         const scalar rhow = row.get<scalar>("density");
+        const sizeDistribution& size = mat.size(n);
+        const bool fixedBoth = row.found("diameter") && size.fixed();
+        const scalar dw =
+            fixedBoth ? row.get<scalar>("diameter") : size.minDiameter();
         const Pair<scalar> changes[3] =
         {
-            {Nw, mat.N(n)}, {dw, mat.diameter(n)}, {rhow, mat.density(n)}
+            {Nw, mat.N(n)}, {rhow, mat.density(n)}, {dw, size.minDiameter()}
         };
-        const char* keys[3] = {"N", "diameter", "density"};
+        const char* keys[3] = {"N", "density", "diameter"};
+
+        // A size distribution, or a change between one size and a
+        // distribution, is compared as its description
+        const std::string sizeWritten =
+            row.found("diameter")
+          ? "diameter " + str(row.get<scalar>("diameter"))
+          : "sizeDistribution '"
+          + std::string(row.get<string>("sizeDistribution")) + "'";
+        const std::string sizeNow =
+            size.fixed()
+          ? "diameter " + str(size.minDiameter())
+          : "sizeDistribution '" + std::string(size.description()) + "'";
+        if (!fixedBoth && sizeWritten != sizeNow)
+        {
+            FatalIOErrorInFunction(demDict)
+                << "Type " << written[t] << " has " << sizeNow.c_str()
+                << " in " << demDict.name() << "/types/" << written[t]
+                << ", but its " << count[t] << " parcels at time "
+                << timeName << " were injected with " << sizeWritten.c_str()
+                << "." << nl
+                << "    A restart cannot change what the parcels were made"
+                << " with: restore the type's size as written, or change it"
+                << " from the injection on (startTime 0)"
+                << exit(FatalIOError);
+        }
+
         for (label k = 0; k < 3; ++k)
         {
             if (!same(changes[k].first(), changes[k].second()))

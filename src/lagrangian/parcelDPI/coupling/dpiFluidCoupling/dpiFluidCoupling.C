@@ -74,7 +74,8 @@ void Foam::dpiFluidCoupling::checkTimeStep(const demMaterials& mat) const
 {
     const scalar Dt = mesh_.time().deltaTValue();
 
-    // Largest viscosity and smallest density: the shortest time
+    // Largest viscosity, smallest density and each type's smallest
+    // primary: the shortest time
     const scalar muMax = gMax(mu_.primitiveField());
     const scalar rhoMin = gMin(rho_.primitiveField());
     const scalar nuMax = muMax/rhoMin;
@@ -97,7 +98,8 @@ void Foam::dpiFluidCoupling::checkTimeStep(const demMaterials& mat) const
                 tau,
                 forces_[i].relaxationTime
                 (
-                    mat.diameter(typei), mat.density(typei), rhoMin, nuMax
+                    mat.size(typei).minDiameter(), mat.density(typei),
+                    rhoMin, nuMax
                 )
             );
         }
@@ -105,6 +107,7 @@ void Foam::dpiFluidCoupling::checkTimeStep(const demMaterials& mat) const
         if (tau < GREAT)
         {
             Info<< "    type " << mat.names()[typei]
+                << (mat.size(typei).fixed() ? "" : " (its smallest size)")
                 << ": relaxation time " << tau << " s, fluid step/tau "
                 << Dt/tau << endl;
         }

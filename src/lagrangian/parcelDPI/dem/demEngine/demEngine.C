@@ -83,14 +83,15 @@ Foam::scalar Foam::demEngine::readSkin(const dictionary& dict) const
         const dictionary& types = dict.subDict("types");
         FatalIOErrorInFunction(types)
             << "No type in dictionary " << types.name() << " has a"
-            << " 'diameter' (types " << flatOutput(materials_.names())
+            << " 'diameter' or 'sizeDistribution' (types "
+            << flatOutput(materials_.names())
             << "): a type without one is a wall material, and parcels"
             << " cannot be made of it." << nl
             << "    Give the types parcels are made of a diameter and a"
             << " density" << exit(FatalIOError);
     }
     const scalar skin =
-        nsDict.getOrDefault<scalar>("skin", materials_.minDiameter());
+        nsDict.getOrDefault<scalar>("skin", materials_.minMedianDiameter());
     if (!(skin > 0))
     {
         FatalIOErrorInFunction(dict)
@@ -118,12 +119,20 @@ void Foam::demEngine::checkDiameters
     const dictionary& types = dict.subDict("types");
     forAll(materials_.names(), t)
     {
-        const scalar d = materials_.diameter(t);
-        if (materials_.isParticleType(t) && !(d < extent))
+        if (!materials_.isParticleType(t))
+        {
+            continue;
+        }
+        const scalar d = materials_.size(t).maxDiameter();
+        if (!(d < extent))
         {
             const word& name = materials_.names()[t];
             FatalIOErrorInFunction(types.subDict(name))
-                << "Entry 'diameter' = " << d << " in dictionary "
+                << (
+                       materials_.size(t).fixed()
+                     ? "Entry 'diameter'" : "The largest diameter"
+                   )
+                << " = " << d << " in dictionary "
                 << types.subDict(name).name() << " is larger than the mesh"
                 << " (bounds " << meshBb.min() << ' ' << meshBb.max()
                 << ", " << extent << " m across at its narrowest): a"

@@ -51,6 +51,7 @@ Foam::scalar readInRange
 const Foam::wordList Foam::demMaterials::typeKeys
 ({
     "diameter",
+    "sizeDistribution",
     "density",
     "youngsModulus",
     "poissonsRatio",
@@ -78,31 +79,16 @@ void Foam::demMaterials::readType(const label typei, const dictionary& d)
         return x > 0 && x < std::numeric_limits<scalar>::max();
     };
 
-    if (d.found("diameter"))
+    // Neither diameter nor sizeDistribution: a wall-only material, whose
+    // diameter and density are not needed (walls have infinite mass)
+    sizes_.set(typei, sizeDistribution::New(d));
+    if (sizes_.set(typei))
     {
-        diameter_[typei] =
-            readInRange(d, "diameter", positive, "finite and > 0");
-        // (compared without cubing: the overflow itself traps, sigFpe)
-        if (!(diameter_[typei] < Foam::cbrt(VGREAT)))
-        {
-            // Its volume, mass and every sum over it overflow (was:
-            // "The neighbour-search skin must be > 0", the smallest
-            // diameter taken for none). The mesh check (demEngine) refuses
-            // any diameter larger than the mesh
-            FatalIOErrorInFunction(d)
-                << "Entry 'diameter' = " << diameter_[typei]
-                << " in dictionary " << d.name() << " is out of range: a"
-                << " particle's volume overflows (diameters are in metres:"
-                << " 5e-6 for 5 um)" << exit(FatalIOError);
-        }
         density_[typei] =
             readInRange(d, "density", positive, "finite and > 0");
     }
     else
     {
-        // A wall-only material: no particle of this type may exist, so
-        // diameter and density are not needed (walls have infinite mass)
-        diameter_[typei] = -1;
         density_[typei] = d.getOrDefault<scalar>("density", -1);
     }
 
@@ -290,7 +276,7 @@ Foam::demMaterials::demMaterials
     }
 
     const label n = names_.size();
-    diameter_.setSize(n);
+    sizes_.setSize(n);
     density_.setSize(n);
     youngsModulus_.setSize(n);
     poissonsRatio_.setSize(n);
@@ -344,9 +330,13 @@ Foam::label Foam::demMaterials::typeIndex
 }
 
 
-Foam::scalar Foam::demMaterials::primaryMass(const label i) const
+Foam::scalar Foam::demMaterials::primaryMass
+(
+    const label i,
+    const scalar d
+) const
 {
-    return density_[i]*constant::mathematical::pi/6*pow3(diameter_[i]);
+    return density_[i]*constant::mathematical::pi/6*pow3(d);
 }
 
 
@@ -356,7 +346,8 @@ Foam::scalar Foam::demMaterials::rayleighTime(const label i) const
     const scalar G = youngsModulus_[i]/(2*(1 + nu));
 
     return
-        constant::mathematical::pi*0.5*diameter_[i]*sqrt(density_[i]/G)
+        constant::mathematical::pi*0.5*size(i).minDiameter()
+       *sqrt(density_[i]/G)
        /(0.1631*nu + 0.8766);
 }
 
@@ -374,27 +365,30 @@ Foam::scalar Foam::demMaterials::parcelN() const
 
 Foam::scalar Foam::demMaterials::maxDiameter() const
 {
-    // Wall materials have none (negative)
     scalar d = 0;
-    for (const scalar di : diameter_)
+    forAll(sizes_, i)
     {
-        d = max(d, di);
+        if (isParticleType(i))
+        {
+            d = max(d, size(i).maxDiameter());
+        }
     }
     return d;
 }
 
 
-Foam::scalar Foam::demMaterials::minDiameter() const
+Foam::scalar Foam::demMaterials::minMedianDiameter() const
 {
     // No sentinel value: any diameter the types hold is a candidate (was
     // GREAT, so a type of diameter above 1e15 m counted as none)
     bool any = false;
     scalar d = 0;
-    forAll(diameter_, i)
+    forAll(sizes_, i)
     {
         if (isParticleType(i))
         {
-            d = any ? min(d, diameter_[i]) : diameter_[i];
+            const scalar di = size(i).numberMedian();
+            d = any ? min(d, di) : di;
             any = true;
         }
     }

@@ -392,8 +392,9 @@ Foam::functionObjects::dpiEmittedDose::dpiEmittedDose
 
 Foam::scalar Foam::functionObjects::dpiEmittedDose::aerodynamicDiameter
 (
-    const dpiCloudInterface::escapedParcel& e
-) const
+    const dpiCloudInterface::escapedParcel& e,
+    const scalar chi
+)
 {
     if (e.onCarrier)
     {
@@ -405,7 +406,16 @@ Foam::scalar Foam::functionObjects::dpiEmittedDose::aerodynamicDiameter
     }
     const scalar dv = cbrt(6*e.agglomerateVolume/constant::mathematical::pi);
     const scalar rhoAgg = e.agglomerateMass/e.agglomerateVolume;
-    return dv*sqrt(rhoAgg/(shapeFactor_*rho0));
+    return dv*sqrt(rhoAgg/(chi*rho0));
+}
+
+
+Foam::scalar Foam::functionObjects::dpiEmittedDose::apiMass
+(
+    const dpiCloudInterface::escapedParcel& e
+)
+{
+    return e.N*e.rho*constant::mathematical::pi/6*pow3(e.d);
 }
 
 
@@ -509,7 +519,7 @@ bool Foam::functionObjects::dpiEmittedDose::execute()
         {
             continue;
         }
-        const scalar m = e.N*e.rho*pi6*pow3(e.d);
+        const scalar m = apiMass(e);
         const label i = ids.find(e.patchi);
         if (i < 0)
         {

@@ -137,7 +137,9 @@ Foam::label Foam::DPICloud<CloudType>::inject
         parcelType& p = *pPtr;
 
         p.typeId() = typei;
-        p.d() = (s.d > 0 ? s.d : mat.diameter(typei));
+        // The injectors give every parcel its diameter (dpiInjectors
+        // draws those of polydisperse types); the type's median otherwise
+        p.d() = (s.d > 0 ? s.d : mat.size(typei).numberMedian());
         p.dTarget() = p.d();
         p.rho() = mat.density(typei);
         p.N() = mat.N(typei);

@@ -125,7 +125,9 @@ void Foam::timeStepCheck::check
         {
             continue;
         }
-        const scalar ri = 0.5*mat.diameter(i);
+        // The smallest primaries of each type: the shortest contact (t_H
+        // goes as the radius at a given density and impact speed)
+        const scalar ri = 0.5*mat.size(i).minDiameter();
         const scalar mi = mat.primaryMass(i);
 
         for (label j = i; j < mat.size(); ++j)
@@ -134,7 +136,7 @@ void Foam::timeStepCheck::check
             {
                 continue;
             }
-            const scalar rj = 0.5*mat.diameter(j);
+            const scalar rj = 0.5*mat.size(j).minDiameter();
             const scalar mj = mat.primaryMass(j);
             const scalar Rstar = ri*rj/(ri + rj);
             const scalar mdyn = pairScaling::dynamicReducedMass
@@ -147,11 +149,15 @@ void Foam::timeStepCheck::check
             row(mat.names()[i] + "-" + mat.names()[j], Rstar, mdyn, tH);
 
             // Theory 7.3: a parcel of N primaries approaching a carrier's
-            // mass breaks the "N primaries on one carrier" picture
+            // mass breaks the "N primaries on one carrier" picture (the
+            // largest parcel on the smallest partner)
             const scalar Ni = mat.N(i), Nj = mat.N(j);
             if (Ni != Nj)
             {
-                const scalar ratio = (Ni > Nj) ? Ni*mi/mj : Nj*mj/mi;
+                const scalar ratio =
+                    (Ni > Nj)
+                  ? Ni*mat.primaryMass(i, mat.size(i).maxDiameter())/mj
+                  : Nj*mat.primaryMass(j, mat.size(j).maxDiameter())/mi;
                 if (ratio > 0.1)
                 {
                     WarningInFunction

@@ -8,6 +8,9 @@ License
 
 #include "dpiInjectors.H"
 #include "PstreamCombineReduceOps.H"
+#include "splitmix.H"
+
+#include <cstring>
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -75,6 +78,43 @@ Foam::dpiInjectors::dpiInjectors
 }
 
 
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::dpiInjectors::drawSizes
+(
+    const label injector,
+    const scalar t0,
+    const label start,
+    DynamicList<injectionSpec>& specs
+) const
+{
+    // Counter-based numbers of (injector, time, index): the same on every
+    // processor and in a restart, with no generator state to keep
+    uint64_t bits;
+    std::memcpy(&bits, &t0, sizeof bits);
+    const uint64_t stream =
+        splitmix(splitmix(uint64_t(injector) + 1) ^ splitmix(bits));
+
+    for (label i = start; i < specs.size(); ++i)
+    {
+        injectionSpec& s = specs[i];
+        const label typei = materials_.names().find(s.type);
+        if
+        (
+            s.d > 0 || typei < 0 || !materials_.isParticleType(typei)
+         || materials_.size(typei).fixed()
+        )
+        {
+            continue;       // given, or checked (and refused) below
+        }
+        const scalar u =
+            scalar(splitmix(stream + uint64_t(i - start)) >> 11)
+               /9007199254740992.0;    // 2^53
+        s.d = materials_.size(typei).diameter(u);
+    }
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 bool Foam::dpiInjectors::due
@@ -95,6 +135,7 @@ bool Foam::dpiInjectors::due
     {
         const label start = specs.size();
         models_[i].inject(t0, t1, specs);
+        drawSizes(i, t0, start, specs);
         models_[i].order(specs, start, dMax);
     }
 
@@ -152,6 +193,7 @@ bool Foam::dpiInjectors::due
             );
             FatalIOErrorInFunction(injDict)
                 << "Injected type " << specs[i].type << " has no 'diameter'"
+                << " (nor 'sizeDistribution')"
                 << " in dictionary " << typeDict.c_str() << ": a type"
                 << " without one is a wall material." << nl
                 << "    Give type " << specs[i].type << " a diameter and a"

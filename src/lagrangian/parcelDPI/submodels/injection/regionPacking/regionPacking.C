@@ -10,6 +10,7 @@ License
 #include "demMaterials.H"
 #include "dictKeys.H"
 #include "mathematicalConstants.H"
+#include "splitmix.H"
 #include "addToRunTimeSelectionTable.H"
 #include <algorithm>
 #include <cstdio>
@@ -191,6 +192,7 @@ void Foam::dpiInjectionModels::regionPacking::readFractions
     }
 
     types_.setSize(names.size());
+    sizes_.setSize(names.size());
     scalar sum = 0;
     forAll(names, k)
     {
@@ -205,8 +207,10 @@ void Foam::dpiInjectionModels::regionPacking::readFractions
 
         packedType& t = types_[k];
         t.name = names[k];
-        t.d = mat.diameter(ti);
+        sizes_.set(k, mat.size(ti).clone());
+        t.size = &sizes_[k];
         t.rho = mat.density(ti);
+        t.meanVolume = constant::mathematical::pi/6*t.size->meanCube();
         t.factor = mat.coarseGraining().factor(ti);
         t.N = mat.N(ti);
         t.api = mat.api(ti);
@@ -234,7 +238,7 @@ void Foam::dpiInjectionModels::regionPacking::readFractions
     scalar norm = 0;
     for (packedType& t : types_)
     {
-        const scalar parcelMass = t.rho*sphereVolume(t.d);
+        const scalar parcelMass = t.rho*t.meanVolume;
         t.x =
             basis_ == fractionBasis::number ? t.fraction
           : basis_ == fractionBasis::mass ? t.fraction/parcelMass
@@ -269,6 +273,7 @@ Foam::dpiInjectionModels::regionPacking::regionPacking
     ),
     region_(packingRegion::New(dict.subDict("region"))),
     types_(),
+    sizes_(),
     basis_(fractionBasis::number),
     volumeFraction_(-1),
     nParticles_(-1),
@@ -318,7 +323,11 @@ Foam::dpiInjectionModels::regionPacking::regionPacking
     {
         if (materials->isParticleType(i))
         {
-            typeDiameter_.insert(materials->names()[i], materials->diameter(i));
+            typeDiameter_.insert
+            (
+                materials->names()[i],
+                materials->size(i).maxDiameter()
+            );
             typeFactor_.insert
             (
                 materials->names()[i],
@@ -413,10 +422,11 @@ Foam::dpiInjectionModels::regionPacking::regionPacking
 
     for (const packedType& t : types_)
     {
-        if (t.x > 0 && !region_->fits(0.5*t.d))
+        const scalar dMax = t.size->maxDiameter();
+        if (t.x > 0 && !region_->fits(0.5*dMax))
         {
             FatalIOErrorInFunction(dict)
-                << "A particle of type " << t.name << " (d = " << t.d
+                << "A particle of type " << t.name << " (d = " << dMax
                 << " m) does not fit in the " << region_->shapeName()
                 << " of dictionary " << dict.subDict("region").name()
                 << exit(FatalIOError);
@@ -440,7 +450,7 @@ Foam::labelList Foam::dpiInjectionModels::regionPacking::counts
         scalar mMean = 0;
         for (const packedType& t : types_)
         {
-            mMean += t.x*t.N*t.rho*sphereVolume(t.d);
+            mMean += t.x*t.N*t.rho*t.meanVolume;
         }
         const scalar n = fillMass_/mMean;
         if (!(n < labelMax))
@@ -473,7 +483,7 @@ Foam::labelList Foam::dpiInjectionModels::regionPacking::counts
         scalar vMean = 0;
         for (const packedType& t : types_)
         {
-            vMean += t.x*sphereVolume(t.d);
+            vMean += t.x*t.meanVolume;
         }
         N = label(std::round(target/vMean));
     }
@@ -519,7 +529,7 @@ void Foam::dpiInjectionModels::regionPacking::pack
     scalar dMax = 0;
     for (const packedType& t : types_)
     {
-        dMax = max(dMax, t.factor*t.d);
+        dMax = max(dMax, t.factor*t.size->maxDiameter());
     }
     // The grown radius of a particle of radius r and contact radius
     // factor f, 0 if it does not grow
@@ -586,20 +596,42 @@ void Foam::dpiInjectionModels::regionPacking::pack
 
     const labelList n(counts(obstacleVolume));
 
-    // Larger types first (a large particle finds no room among small ones)
-    labelList order(identity(types_.size()));
+    // Each particle's type and diameter, drawn by number from its type's
+    // distribution, stratified: the m-th of n draws is the quantile of
+    // (m + v)/n, v uniform in [0, 1). So the drawn sizes' distribution
+    // is within 1/n of the typed one at every size, and their mean d^3
+    // (the fill's mass) within (dmax^3 - dmin^3)/n of its mean, where
+    // independent draws would miss the mass by several times d^3's
+    // spread over sqrt(n) (a GSD of 1.8: 20 % for 600 parcels). The v come
+    // from counter-based numbers of (seed, type, m), so the placement's
+    // draws (rnd) are those of one-size types alone
+    struct particle { label type; scalar d; };
+    std::vector<particle> all;
+    forAll(types_, k)
+    {
+        const sizeDistribution& size = *types_[k].size;
+        const uint64_t stream =
+            splitmix(splitmix(uint64_t(seed_)) ^ uint64_t(k + 1));
+        for (label m = 0; m < n[k]; ++m)
+        {
+            // 53 random bits: v in [0, 1)
+            const scalar v =
+                scalar(splitmix(stream + uint64_t(m)) >> 11)
+               /9007199254740992.0;    // 2^53
+            all.push_back(particle{k, size.diameter((m + v)/n[k])});
+        }
+    }
+
+    // Larger particles first (a large particle finds no room among small
+    // ones); of equal size, in type then draw order
     std::stable_sort
     (
-        order.begin(),
-        order.end(),
-        [&](const label a, const label b) { return types_[a].d > types_[b].d; }
+        all.begin(),
+        all.end(),
+        [](const particle& a, const particle& b) { return a.d > b.d; }
     );
 
-    label nTotal = 0;
-    for (const label c : n)
-    {
-        nTotal += c;
-    }
+    const label nTotal = label(all.size());
 
     const scalar V = region_->volume();
     scalar placedVolume = 0;
@@ -650,7 +682,7 @@ void Foam::dpiInjectionModels::regionPacking::pack
             spec.U = U_;
             spec.omega = omega_;
             spec.type = t.name;
-            spec.d = -1;
+            spec.d = t.size->fixed() ? -1 : 2*r;
             particles.append(spec);
             return true;
         }
@@ -694,12 +726,13 @@ void Foam::dpiInjectionModels::regionPacking::pack
     };
 
     label nShakes = 0;
-    for (const label k : order)
+    // The primaries' mass of each type, N counted, as drawn
+    scalarList typeMass(types_.size(), Zero);
+    for (const particle& a : all)
     {
-        const packedType& t = types_[k];
-        const scalar r = 0.5*t.d;
+        const packedType& t = types_[a.type];
+        const scalar r = 0.5*a.d;
 
-        for (label m = 0; m < n[k]; ++m)
         {
             bool placed = tryPlace(t, r);
             for (label round = 0; !placed && round < maxShakes_; ++round)
@@ -715,7 +748,7 @@ void Foam::dpiInjectionModels::regionPacking::pack
                     << "Injector " << name_ << " (regionPacking, seed "
                     << seed_ << "): could not place particle " << nPlaced + 1
                     << " of " << nTotal << " (type " << t.name << ", d "
-                    << t.d << " m) without overlap after " << maxAttempts_
+                    << a.d << " m) without overlap after " << maxAttempts_
                     << " attempts (maxAttempts), each of " << maxShakes_
                     << " times after shaking the placed particles"
                     << " (maxShakes)." << nl
@@ -732,7 +765,8 @@ void Foam::dpiInjectionModels::regionPacking::pack
                     << dict_.name() << exit(FatalIOError);
             }
 
-            placedVolume += sphereVolume(t.d);
+            placedVolume += sphereVolume(a.d);
+            typeMass[a.type] += t.N*t.rho*sphereVolume(a.d);
             ++nPlaced;
         }
     }
@@ -760,14 +794,14 @@ void Foam::dpiInjectionModels::regionPacking::pack
     forAll(types_, k)
     {
         const packedType& t = types_[k];
-        totalMass += n[k]*t.N*t.rho*sphereVolume(t.d);
+        totalMass += typeMass[k];
         (t.api ? apiPrimaries : carriers) += n[k]*t.N;
     }
     Info<< "    regionPacking " << name_ << ": the blend";
     forAll(types_, k)
     {
         const packedType& t = types_[k];
-        const scalar m = n[k]*t.N*t.rho*sphereVolume(t.d);
+        const scalar m = typeMass[k];
         char text[160];
         std::snprintf
         (
@@ -785,6 +819,44 @@ void Foam::dpiInjectionModels::regionPacking::pack
         Info<< "; " << text << " API primaries per carrier";
     }
     Info<< endl;
+
+    // The drawn sizes of each polydisperse type beside its distribution:
+    // the medians by number and by mass of the parcels' primaries (a
+    // parcel's N primaries have its diameter, so parcels weigh alike)
+    forAll(types_, k)
+    {
+        const sizeDistribution& size = *types_[k].size;
+        if (size.fixed() || !n[k])
+        {
+            continue;
+        }
+        std::vector<scalar> d;
+        scalar cubes = 0;
+        for (const particle& a : all)
+        {
+            if (a.type == k)
+            {
+                d.push_back(a.d);
+                cubes += pow3(a.d);
+            }
+        }
+        std::sort(d.begin(), d.end());
+        scalar below = 0;
+        std::size_t massMedian = 0;
+        while
+        (
+            massMedian + 1 < d.size()
+         && below + pow3(d[massMedian]) < 0.5*cubes
+        )
+        {
+            below += pow3(d[massMedian++]);
+        }
+        Info<< "    regionPacking " << name_ << ": " << types_[k].name
+            << " sizes drawn: CMD " << d[d.size()/2] << " m, MMD "
+            << d[massMedian] << " m, from " << d.front() << " to "
+            << d.back() << " m (" << size.description().c_str() << ")"
+            << endl;
+    }
 }
 
 

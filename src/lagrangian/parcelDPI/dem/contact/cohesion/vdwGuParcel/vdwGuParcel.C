@@ -359,7 +359,10 @@ Foam::cohesionContactModels::vdwGuParcel::vdwGuParcel(const dictionary& dict)
     scalarList radius(n);
     forAll(radius, i)
     {
-        radius[i] = mat.isParticleType(i) ? 0.5*mat.diameter(i) : -1;
+        // The report's radius: the number median (a polydisperse type's
+        // continuity hardly depends on it, s << r)
+        radius[i] =
+            mat.isParticleType(i) ? 0.5*mat.size(i).numberMedian() : -1;
     }
 
     // Materials of the walls in use
