@@ -988,14 +988,7 @@ TEST(polydisperse, retentionDepositsByEachParcelsRadius)
         const scalar N = 10;
         dpiCloudInterface::parcelSamples s;
         const label n = ps.size();
-        s.position.setSize(n);
-        s.N.setSize(n);
-        s.api.setSize(n);
-        s.globalId.setSize(n);
-        s.agglomerateId.setSize(n);
-        s.d.setSize(n);
-        s.rho.setSize(n);
-        s.cell.setSize(n);
+        s.setSize(n);
         for (label k = 0; k < n; ++k)
         {
             s.position[k] = ps[k].x;

@@ -252,14 +252,7 @@ template<class CloudType>
 void Foam::DPICloud<CloudType>::samples(parcelSamples& s) const
 {
     const label n = this->size();
-    s.position.setSize(n);
-    s.N.setSize(n);
-    s.api.setSize(n);
-    s.globalId.setSize(n);
-    s.agglomerateId.setSize(n);
-    s.d.setSize(n);
-    s.rho.setSize(n);
-    s.cell.setSize(n);
+    s.setSize(n);
 
     label i = 0;
     for (const parcelType& p : *this)
