@@ -33,6 +33,26 @@ Foam::scalar Foam::sizeDistributions::logNormal::Phi(const scalar x)
 }
 
 
+Foam::scalar Foam::sizeDistributions::logNormal::undersize
+(
+    const scalar d,
+    const scalar shift,
+    const scalar PhiLo,
+    const scalar PhiHi
+) const
+{
+    if (d <= min_)
+    {
+        return 0;
+    }
+    if (d >= max_)
+    {
+        return 1;
+    }
+    return (Phi(z(d) - shift) - PhiLo)/(PhiHi - PhiLo);
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::sizeDistributions::logNormal::logNormal(const dictionary& dict)
@@ -121,15 +141,7 @@ Foam::scalar Foam::sizeDistributions::logNormal::numberUndersize
     const scalar d
 ) const
 {
-    if (d <= min_)
-    {
-        return 0;
-    }
-    if (d >= max_)
-    {
-        return 1;
-    }
-    return (Phi(z(d)) - PhiA_)/(PhiB_ - PhiA_);
+    return undersize(d, 0, PhiA_, PhiB_);
 }
 
 
@@ -138,15 +150,8 @@ Foam::scalar Foam::sizeDistributions::logNormal::massUndersize
     const scalar d
 ) const
 {
-    if (d <= min_)
-    {
-        return 0;
-    }
-    if (d >= max_)
-    {
-        return 1;
-    }
-    return (Phi(z(d) - 3*s_) - PhiAm_)/(PhiBm_ - PhiAm_);
+    // The mass is log-normal with the same s about ln CMD + 3 s^2
+    return undersize(d, 3*s_, PhiAm_, PhiBm_);
 }
 
 

@@ -50,6 +50,27 @@ Foam::label Foam::sizeDistributions::tabulatedSize::interval
 }
 
 
+Foam::scalar Foam::sizeDistributions::tabulatedSize::undersize
+(
+    const scalar d,
+    const scalarList& F,
+    const scalar p,
+    const scalar scale
+) const
+{
+    if (d <= d_.first())
+    {
+        return 0;
+    }
+    if (d >= d_.last())
+    {
+        return 1;
+    }
+    const label k = interval(d);
+    return F[k] + scale*c_[k]*integral(p, d_[k], d);
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::sizeDistributions::tabulatedSize::tabulatedSize(const dictionary& dict)
@@ -151,16 +172,7 @@ Foam::scalar Foam::sizeDistributions::tabulatedSize::numberUndersize
     const scalar d
 ) const
 {
-    if (d <= d_.first())
-    {
-        return 0;
-    }
-    if (d >= d_.last())
-    {
-        return 1;
-    }
-    const label k = interval(d);
-    return FN_[k] + c_[k]*integral(q_, d_[k], d);
+    return undersize(d, FN_, q_, 1);
 }
 
 
@@ -169,17 +181,8 @@ Foam::scalar Foam::sizeDistributions::tabulatedSize::massUndersize
     const scalar d
 ) const
 {
-    if (d <= d_.first())
-    {
-        return 0;
-    }
-    if (d >= d_.last())
-    {
-        return 1;
-    }
-    const label k = interval(d);
     // c_ is normalised by number: the mass integral by the mean cube
-    return FM_[k] + c_[k]*integral(q_ + 3, d_[k], d)/meanCube_;
+    return undersize(d, FM_, q_ + 3, 1/meanCube_);
 }
 
 
